@@ -1,0 +1,21 @@
+#pragma once
+// Each `stairmap` subcommand lives in its own file and registers itself on the CLI11 app.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace stairmap::apps {
+
+/// A registered subcommand: its CLI11 node and what to run when it was chosen.
+/// `run` returns the process exit code; exceptions it throws become "error: ..." and exit 2.
+struct Command {
+    CLI::App* cli = nullptr;
+    std::function<int()> run;
+};
+
+Command addDetectCommand(CLI::App& app);
+Command addSimCommand(CLI::App& app);
+Command addEvalCommand(CLI::App& app);
+Command addMapCommand(CLI::App& app);
+
+}  // namespace stairmap::apps

@@ -1,0 +1,42 @@
+#pragma once
+// The detector's output model (paper Sec. III-C/D): a staircase is an ordered list of step edges
+// plus the geometry estimated from them.
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace stairmap {
+
+/// One step edge (the nosing line of a tread), a horizontal segment.
+struct StairEdge {
+    Eigen::Vector3d start = Eigen::Vector3d::Zero();  ///< [m] one end of the edge
+    Eigen::Vector3d end = Eigen::Vector3d::Zero();    ///< [m] the other end
+    /// Covariance of the supporting infinite line in Hessian normal form (rho [m], theta [rad]),
+    /// rho = x cos(theta) + y sin(theta), expressed in the frame the edge is given in.
+    Eigen::Matrix2d cov_rho_theta = Eigen::Matrix2d::Identity() * 1e-4;
+    int num_points = 0;  ///< points that supported the weighted line fit
+
+    /// Orientation alpha of the edge in the XY plane [rad], folded into (-pi/2, pi/2].
+    double orientationRad() const;
+    Eigen::Vector3d centre() const { return 0.5 * (start + end); }
+    double length() const { return (end - start).norm(); }
+};
+
+enum class StairDirection { Ascending, Descending };
+
+/// A detected staircase. `steps` are ordered from the floor the observer stands on outward
+/// (ascending: bottom to top; descending: top to bottom).
+struct Staircase {
+    StairDirection direction = StairDirection::Ascending;
+    std::vector<StairEdge> steps;
+    double step_height = 0.0;        ///< [m] mean rise
+    double step_depth = 0.0;         ///< [m] mean run
+    double step_width = 0.0;         ///< [m] mean edge length
+    double slope_rad = 0.0;          ///< atan(step_height / step_depth)
+    Eigen::Vector3d location = Eigen::Vector3d::Zero();  ///< [m] centre of steps.front()
+    /// Direction of travel along the flight [rad], counter-clockwise from +x: up the stairs for an
+    /// ascending staircase, down them for a descending one.
+    double heading_rad = 0.0;
+};
+
+}  // namespace stairmap
