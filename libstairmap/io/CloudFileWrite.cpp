@@ -1,0 +1,31 @@
+// writeCloudFile: extension dispatch and the file wrapper around the stream writers.
+
+#include <fstream>
+#include <stdexcept>
+
+#include "io/CloudFile.h"
+#include "io/CloudFileFormat.h"
+
+namespace stairmap::io {
+
+void writeCloudFile(const std::string& path, const PointCloud& cloud, CloudFileEncoding encoding) {
+    const CloudFileFormat format = cloudFileFormatOf(path);
+    if (format == CloudFileFormat::Rawlog || format == CloudFileFormat::Unknown) {
+        throw std::runtime_error(path + ": cannot write this format (expected .xyz, .pcd or .ply)");
+    }
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error(path + ": cannot be opened for writing");
+    try {
+        switch (format) {
+            case CloudFileFormat::Xyz: writeXyz(out, cloud); break;
+            case CloudFileFormat::Pcd: writePcd(out, cloud, encoding); break;
+            default: writePly(out, cloud, encoding); break;
+        }
+        out.flush();
+        detail::checkWritten(out);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
+}
+
+}  // namespace stairmap::io
