@@ -1,0 +1,144 @@
+#include "map/VoxelMap.h"
+
+#include <octomap/OcTree.h>
+
+#include <cmath>
+#include <fstream>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace stairmap::map {
+namespace {
+
+void validate(const VoxelMapParams& p) {
+    if (!(p.resolution_m > 0.0) || p.resolution_m > 10.0) {
+        throw std::invalid_argument("VoxelMapParams.resolution_m must be in (0, 10] m");
+    }
+    if (!std::isfinite(p.max_range_m)) {
+        throw std::invalid_argument("VoxelMapParams.max_range_m must be finite");
+    }
+}
+
+/// True if p is finite and within max_range of origin (max_range <= 0: no limit).
+bool usable(const Eigen::Vector3f& p, const Eigen::Vector3d& origin, double max_range) {
+    if (!p.allFinite()) return false;
+    if (max_range <= 0.0) return true;
+    return (p.cast<double>() - origin).squaredNorm() <= max_range * max_range;
+}
+
+}  // namespace
+
+VoxelMap::VoxelMap(const VoxelMapParams& params) : params_(params) {
+    validate(params_);
+    tree_ = std::make_unique<octomap::OcTree>(params_.resolution_m);
+}
+
+VoxelMap::~VoxelMap() = default;
+VoxelMap::VoxelMap(VoxelMap&&) noexcept = default;
+VoxelMap& VoxelMap::operator=(VoxelMap&&) noexcept = default;
+
+std::size_t VoxelMap::insertScan(const PointCloud& points_world,
+                                 const Eigen::Vector3d& origin_world) {
+    std::size_t used = 0;
+    if (params_.insertion_mode == VoxelInsertionMode::Endpoints) {
+        insertEndpoints(points_world, origin_world, used);
+    } else {
+        insertRays(points_world, origin_world, used);
+    }
+    return used;
+}
+
+void VoxelMap::insertEndpoints(const PointCloud& points_world, const Eigen::Vector3d& origin_world,
+                               std::size_t& used) {
+    // Discretise first: a voxel hit by 50 points of one scan gets one hit, not 50 (this is both the
+    // downsampling and what keeps the occupancy update honest).
+    octomap::KeySet keys;
+    octomap::OcTreeKey key;
+    for (const auto& p : points_world) {
+        if (!usable(p, origin_world, params_.max_range_m)) continue;
+        if (!tree_->coordToKeyChecked(p.x(), p.y(), p.z(), key)) continue;
+        keys.insert(key);
+        ++used;
+    }
+    for (const auto& k : keys) tree_->updateNode(k, true, /*lazy_eval=*/false);
+}
+
+void VoxelMap::insertRays(const PointCloud& points_world, const Eigen::Vector3d& origin_world,
+                          std::size_t& used) {
+    octomap::Pointcloud cloud;
+    cloud.reserve(points_world.size());
+    for (const auto& p : points_world) {
+        if (!usable(p, origin_world, params_.max_range_m)) continue;
+        cloud.push_back(p.x(), p.y(), p.z());
+        ++used;
+    }
+    const octomap::point3d origin(origin_world.x(), origin_world.y(), origin_world.z());
+    tree_->insertPointCloud(cloud, origin, params_.max_range_m > 0 ? params_.max_range_m : -1.0,
+                            /*lazy_eval=*/false, /*discretize=*/true);
+}
+
+bool VoxelMap::isOccupied(const Eigen::Vector3d& p_world) const {
+    const octomap::OcTreeNode* node = tree_->search(p_world.x(), p_world.y(), p_world.z());
+    return node != nullptr && tree_->isNodeOccupied(node);
+}
+
+PointCloud VoxelMap::occupiedVoxelCentres() const {
+    PointCloud centres;
+    for (auto it = tree_->begin_leafs(), end = tree_->end_leafs(); it != end; ++it) {
+        if (!tree_->isNodeOccupied(*it)) continue;
+        const octomap::point3d c = it.getCoordinate();
+        centres.emplace_back(c.x(), c.y(), c.z());
+    }
+    return centres;
+}
+
+std::size_t VoxelMap::numLeaves() const { return tree_->getNumLeafNodes(); }
+
+std::size_t VoxelMap::memoryUsageBytes() const { return tree_->memoryUsage(); }
+
+void VoxelMap::writeBinary(std::ostream& out) const {
+    if (!tree_->writeBinaryConst(out) || !out) {
+        throw std::runtime_error("VoxelMap: writing the OctoMap binary stream failed");
+    }
+}
+
+void VoxelMap::save(const std::string& path) const {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    if (!tree_->writeBinaryConst(out) || !out.flush()) {
+        throw std::runtime_error(path + ": writing the OctoMap binary file failed");
+    }
+}
+
+VoxelMap VoxelMap::readBinary(std::istream& in, const std::string& source_name) {
+    // Peek at the header for the resolution; octomap's readBinary keeps the tree's resolution
+    // otherwise. Read everything into memory so we can parse twice.
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string data = buffer.str();
+    std::istringstream header(data);
+    std::string line;
+    double res = 0.0;
+    while (std::getline(header, line)) {
+        if (line.rfind("res ", 0) == 0) res = std::strtod(line.c_str() + 4, nullptr);
+        if (line == "data") break;
+    }
+    if (!(res > 0.0)) throw std::runtime_error(source_name + ": not an OctoMap .bt file (no res)");
+    VoxelMapParams params;
+    params.resolution_m = res;
+    VoxelMap map(params);
+    std::istringstream body(data);
+    if (!map.tree_->readBinary(body)) {
+        throw std::runtime_error(source_name + ": not a valid OctoMap binary (.bt) file");
+    }
+    return map;
+}
+
+VoxelMap VoxelMap::load(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path + ": cannot open for reading");
+    return readBinary(in, path);
+}
+
+}  // namespace stairmap::map
