@@ -1,0 +1,122 @@
+#include "io/ObservationToPoints.h"
+
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CObservationVelodyneScan.h>
+
+#include <cmath>
+
+#include "io/PoseConversion.h"
+#include "io/VelodyneDecoder.h"
+
+namespace stairmap::io {
+namespace {
+
+using mrpt::obs::CObservation3DRangeScan;
+using mrpt::obs::CObservationPointCloud;
+using mrpt::obs::CObservationVelodyneScan;
+
+static_assert(sizeof(CObservationVelodyneScan::TVelodyneRawPacket) == kVelodynePacketSize,
+              "MRPT's packet struct must be the raw 1206-byte UDP payload");
+
+// Appends T * p for each finite p; counts the non-finite ones.
+template <typename GetPoint>
+void appendTransformed(std::size_t n, GetPoint get, const Eigen::Isometry3d& T,
+                       ObservationPoints& out) {
+    const Eigen::Isometry3f Tf = T.cast<float>();
+    out.points_robot.reserve(out.points_robot.size() + n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3f p = get(i);
+        if (!p.allFinite()) {
+            ++out.dropped_non_finite;
+            continue;
+        }
+        out.points_robot.push_back(Tf * p);
+    }
+}
+
+void appendPointsMap(const mrpt::maps::CPointsMap& map, const Eigen::Isometry3d& T,
+                     ObservationPoints& out) {
+    const auto& xs = map.getPointsBufferRef_x();
+    const auto& ys = map.getPointsBufferRef_y();
+    const auto& zs = map.getPointsBufferRef_z();
+    appendTransformed(
+        xs.size(), [&](std::size_t i) { return Eigen::Vector3f(xs[i], ys[i], zs[i]); }, T, out);
+}
+
+void convertPointCloud(const CObservationPointCloud& obs, ObservationPoints& out) {
+    obs.load();  // externally stored clouds (no-op otherwise)
+    if (!obs.pointcloud) return;  // an empty observation is a valid, empty scan
+    appendPointsMap(*obs.pointcloud, toIsometry(obs.sensorPose), out);
+}
+
+// Laser table: the observation's own calibration if it matches the model, else the datasheet.
+VelodyneCalibrationTable velodyneTable(const CObservationVelodyneScan& obs, VelodyneModel model) {
+    VelodyneCalibrationTable table = defaultVelodyneCalibration(model);
+    const auto& corr = obs.calibration.laser_corrections;
+    if (corr.size() != table.lasers.size()) return table;
+    for (std::size_t i = 0; i < corr.size(); ++i) {
+        VelodyneLaser& l = table.lasers[i];
+        l.elevation_rad = std::atan2(corr[i].sinVertCorrection, corr[i].cosVertCorrection);
+        l.azimuth_correction_rad = corr[i].azimuthCorrection * M_PI / 180.0;
+        l.distance_offset_m = corr[i].distanceCorrection;
+        l.vertical_offset_m = corr[i].verticalOffsetCorrection;
+        l.horizontal_offset_m = corr[i].horizontalOffsetCorrection;
+    }
+    return table;
+}
+
+void convertVelodyne(const CObservationVelodyneScan& obs, const ObservationConversionParams& params,
+                     ObservationPoints& out) {
+    if (obs.scan_packets.empty()) return;
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(obs.scan_packets.data());
+    const VelodyneModel model = velodyneModelFromPacket(bytes, VelodyneModel::VLP16);
+    VelodyneDecoderParams dec;
+    dec.min_range_m = std::max<float>(params.velodyne_min_range_m, float(obs.minRange));
+    dec.max_range_m = std::min<float>(params.velodyne_max_range_m, float(obs.maxRange));
+    const PointCloud sensor_points =
+        decodeVelodynePackets(bytes, obs.scan_packets.size(), velodyneTable(obs, model), dec);
+    appendTransformed(
+        sensor_points.size(), [&](std::size_t i) { return sensor_points[i]; },
+        toIsometry(obs.sensorPose), out);
+}
+
+void convertRangeScan(const CObservation3DRangeScan& obs, ObservationPoints& out) {
+    if (!obs.hasRangeImage) return;
+    auto& mutable_obs = const_cast<CObservation3DRangeScan&>(obs);  // unprojectInto is non-const
+    mrpt::maps::CSimplePointsMap map;
+    mrpt::obs::T3DPointsProjectionParams pp;
+    pp.takeIntoAccountSensorPoseOnRobot = true;  // -> robot frame
+    mutable_obs.unprojectInto(map, pp);
+    appendPointsMap(map, Eigen::Isometry3d::Identity(), out);
+}
+
+}  // namespace
+
+bool isConvertible3DObservation(const mrpt::obs::CObservation& obs) {
+    return dynamic_cast<const CObservationPointCloud*>(&obs) ||
+           dynamic_cast<const CObservationVelodyneScan*>(&obs) ||
+           dynamic_cast<const CObservation3DRangeScan*>(&obs);
+}
+
+ObservationPoints observationToRobotPoints(const mrpt::obs::CObservation& obs,
+                                           const ObservationConversionParams& params) {
+    ObservationPoints out;
+    out.type_name = obs.GetRuntimeClass()->className;
+    out.convertible = true;
+    if (const auto* pc = dynamic_cast<const CObservationPointCloud*>(&obs)) {
+        convertPointCloud(*pc, out);
+    } else if (const auto* velo = dynamic_cast<const CObservationVelodyneScan*>(&obs)) {
+        convertVelodyne(*velo, params, out);
+    } else if (const auto* range = dynamic_cast<const CObservation3DRangeScan*>(&obs)) {
+        convertRangeScan(*range, out);
+    } else {
+        out.convertible = false;
+        out.reason = "MRPT 2.5 observation type '" + out.type_name +
+                     "' cannot be converted to 3D points by stairmap";
+    }
+    return out;
+}
+
+}  // namespace stairmap::io
