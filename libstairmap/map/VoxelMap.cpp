@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -26,6 +27,19 @@ bool usable(const Eigen::Vector3f& p, const Eigen::Vector3d& origin, double max_
     if (max_range <= 0.0) return true;
     return (p.cast<double>() - origin).squaredNorm() <= max_range * max_range;
 }
+
+/// liboctomap (Debian build) chats on std::cerr while reading/writing; keep our stderr clean.
+class QuietCerr {
+public:
+    QuietCerr() : saved_(std::cerr.rdbuf(sink_.rdbuf())) {}
+    ~QuietCerr() { std::cerr.rdbuf(saved_); }
+    QuietCerr(const QuietCerr&) = delete;
+    QuietCerr& operator=(const QuietCerr&) = delete;
+
+private:
+    std::ostringstream sink_;
+    std::streambuf* saved_;
+};
 
 }  // namespace
 
@@ -98,6 +112,7 @@ std::size_t VoxelMap::numLeaves() const { return tree_->getNumLeafNodes(); }
 std::size_t VoxelMap::memoryUsageBytes() const { return tree_->memoryUsage(); }
 
 void VoxelMap::writeBinary(std::ostream& out) const {
+    const QuietCerr quiet;
     if (!tree_->writeBinaryConst(out) || !out) {
         throw std::runtime_error("VoxelMap: writing the OctoMap binary stream failed");
     }
@@ -106,6 +121,7 @@ void VoxelMap::writeBinary(std::ostream& out) const {
 void VoxelMap::save(const std::string& path) const {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    const QuietCerr quiet;
     if (!tree_->writeBinaryConst(out) || !out.flush()) {
         throw std::runtime_error(path + ": writing the OctoMap binary file failed");
     }
@@ -129,6 +145,7 @@ VoxelMap VoxelMap::readBinary(std::istream& in, const std::string& source_name) 
     params.resolution_m = res;
     VoxelMap map(params);
     std::istringstream body(data);
+    const QuietCerr quiet;
     if (!map.tree_->readBinary(body)) {
         throw std::runtime_error(source_name + ": not a valid OctoMap binary (.bt) file");
     }
