@@ -1,0 +1,61 @@
+#pragma once
+// Parameters of the persistent staircase landmark map (config sections [landmarks] and [floors]).
+
+#include <stdexcept>
+#include <string>
+
+namespace stairmap {
+
+/// Association, fusion and floor parameters. Defaults relax the paper's Definition 2 (5 cm / 5 cm /
+/// 10 deg) a little because landmark detections arrive in the world frame and carry pose drift.
+struct LandmarkParams {
+    // --- [landmarks] association: two step edges are the "same stair" (Definition 2) when ...
+    double match_height_m = 0.06;     ///< [m] ... their heights differ by at most this
+    double match_distance_m = 0.08;   ///< [m] ... the perpendicular xy distance between the LINES
+                                      ///< (not the centres: partial views shift centres) is at most this
+    double match_angle_deg = 10.0;    ///< [deg] ... their xy orientations differ by at most this
+    double min_edge_overlap_m = 0.05; ///< [m] ... and they overlap along the edge by at least this
+                                      ///< (keeps side-by-side flights with collinear edges apart)
+    double heading_tolerance_deg = 30.0;  ///< [deg] uphill headings must agree within this to associate
+    // --- [landmarks] footprint association (used when no step matches, e.g. larger pose drift)
+    bool use_footprint = true;             ///< also associate staircases whose footprints overlap
+    double footprint_min_overlap = 0.3;    ///< [-] xy overlap area / smaller footprint area
+    double footprint_min_z_overlap_m = 0.10;  ///< [m] their height ranges must overlap by this
+    // --- [landmarks] fusion and confirmation
+    double endpoint_tolerance_m = 0.06;  ///< [m] edge ends closer than this are averaged; a new end
+                                         ///< farther out extends the edge (partial views)
+    int confirm_observations = 3;        ///< [-] K: a landmark is confirmed once seen this many times
+    // --- [floors]
+    double floor_merge_tolerance_m = 0.40;  ///< [m] heights within this belong to the same floor
+    int floor_min_robot_samples = 10;  ///< [-] robot floor samples before a floor is reported
+                                       ///< (samples taken while climbing stay below this)
+};
+
+/// Throws std::invalid_argument naming the first field that is out of range.
+inline void validateLandmarkParams(const LandmarkParams& p) {
+    auto require = [](bool ok, const char* field, const char* what) {
+        if (!ok) throw std::invalid_argument(std::string("LandmarkParams.") + field + ": " + what);
+    };
+    require(p.match_height_m > 0 && p.match_height_m < 1, "match_height_m", "must be in (0, 1) m");
+    require(p.match_distance_m > 0 && p.match_distance_m < 1, "match_distance_m",
+            "must be in (0, 1) m");
+    require(p.match_angle_deg > 0 && p.match_angle_deg <= 45, "match_angle_deg",
+            "must be in (0, 45] deg");
+    require(p.min_edge_overlap_m >= 0 && p.min_edge_overlap_m < 5, "min_edge_overlap_m",
+            "must be in [0, 5) m");
+    require(p.heading_tolerance_deg > 0 && p.heading_tolerance_deg <= 90, "heading_tolerance_deg",
+            "must be in (0, 90] deg");
+    require(p.footprint_min_overlap > 0 && p.footprint_min_overlap <= 1, "footprint_min_overlap",
+            "must be in (0, 1]");
+    require(p.footprint_min_z_overlap_m >= 0 && p.footprint_min_z_overlap_m < 10,
+            "footprint_min_z_overlap_m", "must be in [0, 10) m");
+    require(p.endpoint_tolerance_m >= 0 && p.endpoint_tolerance_m < 1, "endpoint_tolerance_m",
+            "must be in [0, 1) m");
+    require(p.confirm_observations >= 1 && p.confirm_observations <= 1000, "confirm_observations",
+            "must be in [1, 1000]");
+    require(p.floor_merge_tolerance_m > 0 && p.floor_merge_tolerance_m < 5,
+            "floor_merge_tolerance_m", "must be in (0, 5) m");
+    require(p.floor_min_robot_samples >= 1, "floor_min_robot_samples", "must be >= 1");
+}
+
+}  // namespace stairmap

@@ -1,0 +1,49 @@
+#pragma once
+// Plain data of the landmark map (header only, so io/ can (de)serialise it without linking map/).
+
+#include <map>
+#include <vector>
+
+#include "core/Staircase.h"
+#include "map/LandmarkParams.h"
+
+namespace stairmap {
+
+/// One staircase of the persistent map. `stairs` is in the WORLD frame and canonical whichever way
+/// it was seen: direction Ascending, steps ordered bottom to top, every edge's `start` on the right
+/// and `end` on the left when facing uphill, `location` = centre of the lowest edge (the nosing of
+/// the first tread), `heading_rad` = uphill direction (counter-clockwise from world +x).
+struct StaircaseLandmark {
+    int id = -1;                      ///< stable, never reused (absorbed IDs stay retired)
+    Staircase stairs;                 ///< world frame, canonical (see above)
+    std::vector<int> step_observations;  ///< per step: how many detections contributed to it
+    bool confirmed = false;           ///< observations >= LandmarkParams::confirm_observations
+    int observations = 0;             ///< detections fused into this landmark
+    double first_seen_s = 0.0;        ///< [s] stamp of the first detection
+    double last_seen_s = 0.0;         ///< [s] stamp of the latest detection
+    int bottom_floor = -1;            ///< id of the floor the flight leaves from, -1 if unknown
+    int top_floor = -1;               ///< id of the floor the flight reaches, -1 if unknown
+};
+
+/// A floor level (a node of the floor graph; staircases are its edges).
+struct Floor {
+    int id = -1;                ///< stable, never reused
+    double z = 0.0;             ///< [m] world height of the walking surface
+    int robot_samples = 0;      ///< robot floor heights that fell on this level
+    int staircase_ends = 0;     ///< staircase bottoms/tops attached to this level
+    double robot_z_sum = 0.0;   ///< [m] sum of those robot heights (running mean, kept exactly)
+    double end_z_sum = 0.0;     ///< [m] sum of the staircase end heights
+
+    int support() const { return robot_samples + staircase_ends; }
+};
+
+/// Everything needed to continue a map exactly (what the JSON document stores).
+struct LandmarkMapState {
+    std::vector<StaircaseLandmark> staircases;  ///< ordered by id
+    std::vector<Floor> floor_levels;  ///< every height cluster, reported or not, ordered by id
+    std::map<int, int> absorbed;      ///< retired landmark id -> id of the landmark it joined
+    int next_landmark_id = 0;
+    int next_floor_id = 0;
+};
+
+}  // namespace stairmap
