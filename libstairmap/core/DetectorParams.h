@@ -1,10 +1,62 @@
 #pragma once
-// Detector parameters with the paper's defaults. Owner: detector engineer (placeholder to be filled).
+// All thresholds of the staircase detector (paper Sec. III), with the paper's defaults where it gives
+// them. Field names match the keys of the [detector] section of config/default.ini.
+// Frame: gravity-aligned robot frame (x forward, y left, z up); heights are relative to the floor.
 
 namespace stairmap {
 
 struct DetectorParams {
-    double leaf_size_m = 0.025;  ///< [m] voxel grid leaf (paper Sec. IV-A)
+    // --- Pre-processing (Sec. III-A) ---
+    double leaf_size_m = 0.025;            ///< [m] voxel / top-view XY cell size (paper Sec. IV-A)
+    double max_range_m = 10.0;             ///< [m] points farther than this in XY are ignored
+    double max_height_above_floor_m = 3.0; ///< [m] points higher above the floor are ignored
+    double max_depth_below_floor_m = 3.0;  ///< [m] points lower below the floor are ignored
+    double row_height_m = 0.025;           ///< [m] z bin of the cylindrical organisation
+    int azimuth_bins = 1800;               ///< [-] azimuth columns over 360 deg (0.2 deg each)
+    /// [m] a top-view cell is an edge candidate when its neighbour towards the robot is lower or
+    /// higher by more than this (or empty). Below the minimum rise, above 2x the point noise.
+    double edge_min_dz_m = 0.05;
+
+    // --- Segmentation (Sec. III-B) ---
+    double split_distance_m = 0.03;   ///< [m] d_p of the iterative end-point fit
+    int min_line_points = 5;          ///< [-] N_min, fewest points of a line
+    double min_line_length_m = 0.20;  ///< [m] shorter lines are dropped (debris, clutter)
+    double max_point_gap_m = 0.20;    ///< [m] a row is cut where neighbours are farther apart
+    double point_sigma_m = 0.01;      ///< [m] std. dev. of a point for the weighted line fit
+    double merge_chi2 = 9.21;         ///< [-] Mahalanobis gate to merge lines (chi2, 2 dof, 99 %)
+    double vertical_merge_dz_m = 0.06;    ///< [m] lines of nearby rows closer in z are fused ...
+    double vertical_merge_dist_m = 0.04;  ///< [m] ... when also this close in XY
+
+    // --- Grouping (Sec. III-B, last paragraph) ---
+    double floor_tolerance_m = 0.05;      ///< [m] lines within this of the floor are ground lines
+    double floor_refine_window_m = 0.10;  ///< [m] a given floor height is refined within +- this
+    double floor_search_radius_m = 3.0;   ///< [m] XY radius used to estimate / refine the floor
+
+    // --- Definition 1 (stair constraints, OSHA) ---
+    double min_step_height_m = 0.11;  ///< [m] condition 1, minimum rise
+    double max_step_height_m = 0.30;  ///< [m] condition 1, maximum rise
+    double min_step_depth_m = 0.15;   ///< [m] condition 2, minimum run
+    double max_step_depth_m = 0.45;   ///< [m] condition 2, maximum run
+    double min_slope_deg = 25.0;      ///< [deg] condition 3, minimum slope atan(h/d)
+    double max_slope_deg = 60.0;      ///< [deg] condition 3, maximum slope
+    double max_parallel_deg = 10.0;   ///< [deg] condition 4, edges parallel within this
+    /// [-] condition 5: a line between two edges blocks them when it covers at least this fraction
+    /// of their common extent (short debris does not block, a ramp's full-width lines do).
+    double between_overlap_ratio = 0.5;
+    /// [-] two consecutive edges must overlap laterally by this fraction of the shorter one
+    double min_overlap_ratio = 0.3;
+
+    // --- Algorithm 1 ---
+    double init_height_factor = 2.5;  ///< [-] initialisation list: lines within this x max rise
+    /// [-] fewest edges (nosings) of a staircase. The paper asks for more than 4; 3 keeps short
+    /// real flights (2 treads + landing) while 1-2 step stages and curbs are still rejected.
+    int min_steps = 3;
+    int max_staircases_per_direction = 4;  ///< [-] search repeats on the remaining lines
+    bool detect_ascending = true;          ///< search above-ground lines
+    bool detect_descending = true;         ///< search below-ground lines
+
+    /// Throws std::invalid_argument naming the first field that is out of range.
+    void validate() const;
 };
 
 }  // namespace stairmap

@@ -1,0 +1,67 @@
+#include "core/DetectorParams.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace stairmap {
+namespace {
+
+void requireRange(double value, double lo, double hi, const char* field) {
+    if (!std::isfinite(value) || value < lo || value > hi) {
+        throw std::invalid_argument(std::string("DetectorParams.") + field + " = " +
+                                    std::to_string(value) + " is out of range [" +
+                                    std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    }
+}
+
+void requireLess(double lo, double hi, const char* field_lo, const char* field_hi) {
+    if (!(lo < hi)) {
+        throw std::invalid_argument(std::string("DetectorParams.") + field_lo +
+                                    " must be smaller than " + field_hi);
+    }
+}
+
+}  // namespace
+
+void DetectorParams::validate() const {
+    requireRange(leaf_size_m, 0.005, 0.2, "leaf_size_m");
+    requireRange(max_range_m, 0.5, 200.0, "max_range_m");
+    requireRange(max_height_above_floor_m, 0.3, 50.0, "max_height_above_floor_m");
+    requireRange(max_depth_below_floor_m, 0.0, 50.0, "max_depth_below_floor_m");
+    requireRange(row_height_m, 0.005, 0.2, "row_height_m");
+    requireRange(azimuth_bins, 36, 100000, "azimuth_bins");
+    requireRange(edge_min_dz_m, 0.0, 1.0, "edge_min_dz_m");
+    requireRange(split_distance_m, 1e-4, 1.0, "split_distance_m");
+    requireRange(min_line_points, 2, 100000, "min_line_points");
+    requireRange(min_line_length_m, 0.0, 10.0, "min_line_length_m");
+    requireRange(max_point_gap_m, 1e-3, 10.0, "max_point_gap_m");
+    requireRange(point_sigma_m, 1e-5, 1.0, "point_sigma_m");
+    requireRange(merge_chi2, 0.0, 1e6, "merge_chi2");
+    requireRange(vertical_merge_dz_m, 0.0, 1.0, "vertical_merge_dz_m");
+    requireRange(vertical_merge_dist_m, 0.0, 1.0, "vertical_merge_dist_m");
+    requireRange(floor_tolerance_m, 0.0, 1.0, "floor_tolerance_m");
+    requireRange(floor_refine_window_m, 0.0, 2.0, "floor_refine_window_m");
+    requireRange(floor_search_radius_m, 0.1, 100.0, "floor_search_radius_m");
+    requireRange(min_step_height_m, 0.01, 2.0, "min_step_height_m");
+    requireRange(max_step_height_m, 0.01, 2.0, "max_step_height_m");
+    requireLess(min_step_height_m, max_step_height_m, "min_step_height_m", "max_step_height_m");
+    requireRange(min_step_depth_m, 0.01, 3.0, "min_step_depth_m");
+    requireRange(max_step_depth_m, 0.01, 3.0, "max_step_depth_m");
+    requireLess(min_step_depth_m, max_step_depth_m, "min_step_depth_m", "max_step_depth_m");
+    requireRange(min_slope_deg, 0.0, 90.0, "min_slope_deg");
+    requireRange(max_slope_deg, 0.0, 90.0, "max_slope_deg");
+    requireLess(min_slope_deg, max_slope_deg, "min_slope_deg", "max_slope_deg");
+    requireRange(max_parallel_deg, 0.0, 90.0, "max_parallel_deg");
+    requireRange(between_overlap_ratio, 0.0, 1.0, "between_overlap_ratio");
+    requireRange(min_overlap_ratio, 0.0, 1.0, "min_overlap_ratio");
+    requireRange(init_height_factor, 1.0, 20.0, "init_height_factor");
+    requireRange(min_steps, 2, 1000, "min_steps");
+    requireRange(max_staircases_per_direction, 1, 1000, "max_staircases_per_direction");
+    if (floor_tolerance_m >= min_step_height_m) {
+        throw std::invalid_argument(
+            "DetectorParams.floor_tolerance_m must be smaller than min_step_height_m");
+    }
+}
+
+}  // namespace stairmap
