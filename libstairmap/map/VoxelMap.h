@@ -16,22 +16,13 @@
 #include <string>
 
 #include "core/PointCloud.h"
+#include "map/VoxelMapParams.h"
 
 namespace octomap {
 class OcTree;
 }
 
 namespace stairmap::map {
-
-enum class VoxelInsertionMode { Endpoints, RayCast };
-
-/// [map] section of the config.
-struct VoxelMapParams {
-    double resolution_m = 0.05;  ///< [m] leaf voxel edge length (> 0)
-    VoxelInsertionMode insertion_mode = VoxelInsertionMode::Endpoints;
-    double max_range_m = 20.0;   ///< [m] points farther than this from the sensor origin are not
-                                 ///< inserted (<= 0: no limit)
-};
 
 class VoxelMap {
 public:
