@@ -13,4 +13,22 @@ double StairEdge::orientationRad() const {
     return alpha;
 }
 
+Eigen::Vector2d StairEdge::rhoTheta() const {
+    const Eigen::Vector2d d = (end - start).head<2>();
+    const double len = d.norm();
+    // Degenerate edge: the normal is taken towards the point itself.
+    Eigen::Vector2d n = len > 1e-12 ? Eigen::Vector2d(-d.y() / len, d.x() / len)
+                                    : Eigen::Vector2d(1.0, 0.0);
+    double rho = n.dot(start.head<2>());
+    if (len <= 1e-12 && start.head<2>().norm() > 1e-12) {
+        n = start.head<2>().normalized();
+        rho = start.head<2>().norm();
+    }
+    if (rho < 0) {
+        rho = -rho;
+        n = -n;
+    }
+    return {rho, std::atan2(n.y(), n.x())};
+}
+
 }  // namespace stairmap

@@ -7,7 +7,10 @@
 
 namespace stairmap {
 
-/// One step edge (the nosing line of a tread), a horizontal segment.
+/// One step edge, a horizontal segment. Convention (shared with the simulator's ground truth): every
+/// edge is a NOSING, where a tread (or a floor/landing) meets the top of the riser below it, at the
+/// tread's height. Edges made by the detector run from `start` (left) to `end` (right) when facing
+/// along the staircase heading.
 struct StairEdge {
     Eigen::Vector3d start = Eigen::Vector3d::Zero();  ///< [m] one end of the edge
     Eigen::Vector3d end = Eigen::Vector3d::Zero();    ///< [m] the other end
@@ -20,6 +23,10 @@ struct StairEdge {
     double orientationRad() const;
     Eigen::Vector3d centre() const { return 0.5 * (start + end); }
     double length() const { return (end - start).norm(); }
+    /// Hessian normal form (rho [m], theta [rad]) of the supporting XY line: the normal
+    /// (cos theta, sin theta) points from the frame origin to the line, so rho >= 0.
+    /// This is the parametrisation cov_rho_theta refers to.
+    Eigen::Vector2d rhoTheta() const;
 };
 
 enum class StairDirection { Ascending, Descending };

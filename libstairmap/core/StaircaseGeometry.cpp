@@ -1,0 +1,94 @@
+#include "core/StaircaseGeometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace stairmap {
+namespace {
+
+/// Distance from an XY point to the infinite XY line through an edge.
+double pointToLineXY(const Eigen::Vector2d& p, const StairEdge& e) {
+    const Eigen::Vector2d a = e.start.head<2>();
+    const Eigen::Vector2d d = (e.end - e.start).head<2>();
+    const double len = d.norm();
+    if (len < 1e-12) return (p - a).norm();
+    return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / len;
+}
+
+/// Least-squares slope of values[i] against i.
+double slopeAgainstIndex(const std::vector<double>& values) {
+    const int k = static_cast<int>(values.size());
+    if (k < 2) return 0.0;
+    const double i_mean = 0.5 * (k - 1);
+    double v_mean = 0.0;
+    for (double v : values) v_mean += v;
+    v_mean /= k;
+    double num = 0.0, den = 0.0;
+    for (int i = 0; i < k; ++i) {
+        num += (i - i_mean) * (values[i] - v_mean);
+        den += (i - i_mean) * (i - i_mean);
+    }
+    return num / den;
+}
+
+/// Length-weighted mean orientation of the edges (orientations are axial: average 2*alpha).
+double meanOrientation(const std::vector<StairEdge>& steps) {
+    double c = 0.0, s = 0.0;
+    for (const auto& e : steps) {
+        const double a = e.orientationRad();
+        const double w = std::max(e.length(), 1e-6);
+        c += w * std::cos(2 * a);
+        s += w * std::sin(2 * a);
+    }
+    return 0.5 * std::atan2(s, c);
+}
+
+double robustWidth(const std::vector<StairEdge>& steps) {
+    std::vector<double> lengths;
+    lengths.reserve(steps.size());
+    for (const auto& e : steps) lengths.push_back(e.length());
+    std::sort(lengths.begin(), lengths.end());
+    // Median of the longer half: partially seen (short) edges do not pull the width down.
+    const std::size_t first = lengths.size() / 2;
+    const std::size_t n = lengths.size() - first;
+    const std::size_t mid = first + n / 2;
+    return (n % 2 == 1) ? lengths[mid] : 0.5 * (lengths[mid - 1] + lengths[mid]);
+}
+
+}  // namespace
+
+double edgeSpacingXY(const StairEdge& a, const StairEdge& b) {
+    return 0.5 * (pointToLineXY(a.centre().head<2>(), b) + pointToLineXY(b.centre().head<2>(), a));
+}
+
+void estimateGeometry(Staircase& stairs) {
+    const auto& steps = stairs.steps;
+    if (steps.empty()) {
+        stairs.step_height = stairs.step_depth = stairs.step_width = stairs.slope_rad = 0.0;
+        stairs.location.setZero();
+        return;
+    }
+    const double alpha = meanOrientation(steps);
+    Eigen::Vector2d normal(-std::sin(alpha), std::cos(alpha));
+    const Eigen::Vector2d outward =
+        steps.size() > 1 ? Eigen::Vector2d((steps.back().centre() - steps.front().centre()).head<2>())
+                         : Eigen::Vector2d(std::cos(stairs.heading_rad), std::sin(stairs.heading_rad));
+    if (normal.dot(outward) < 0) normal = -normal;
+    stairs.heading_rad = std::atan2(normal.y(), normal.x());
+
+    std::vector<double> heights, cumulative;
+    double run_sum = 0.0;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        heights.push_back(steps[i].centre().z());
+        if (i > 0) run_sum += edgeSpacingXY(steps[i - 1], steps[i]);
+        cumulative.push_back(run_sum);
+    }
+    stairs.step_height = std::abs(slopeAgainstIndex(heights));
+    stairs.step_depth = slopeAgainstIndex(cumulative);
+    stairs.step_width = robustWidth(steps);
+    stairs.slope_rad = std::atan2(stairs.step_height, stairs.step_depth);
+    stairs.location = steps.front().centre();
+}
+
+}  // namespace stairmap

@@ -1,0 +1,27 @@
+#pragma once
+// Estimation of a staircase's geometry from its ordered step edges (paper Sec. III-D, corrected:
+// the paper divides sums of k-1 differences by 2k; here rise and run are least-squares slopes of the
+// edge heights / cumulative edge spacings against the step index, which uses every edge).
+
+#include "core/Staircase.h"
+
+namespace stairmap {
+
+/// Recomputes step_height, step_depth, step_width, slope_rad, location and heading_rad of `stairs`
+/// from `stairs.steps` (ordered outward from the observer's floor). Frame: whatever frame the edges
+/// are in, as long as z is up. Rules:
+///  - heading: normal of the length-weighted mean edge orientation, pointing from steps.front()
+///    towards steps.back() (one edge: the side of the previous heading_rad);
+///  - step_height: |slope| of edge height vs. index; step_depth: slope of the cumulative spacing,
+///    where the spacing of two edges is their mutual perpendicular XY distance (works for turning
+///    spiral steps too);
+///  - step_width: median of the longer half of the edge lengths (robust to partially seen edges);
+///  - location: centre of steps.front(); slope_rad = atan2(step_height, step_depth).
+/// An empty staircase gets all-zero geometry. Cost O(k log k) for k steps.
+void estimateGeometry(Staircase& stairs);
+
+/// Perpendicular XY distance between two edges: mean of the distance of each centre to the other
+/// edge's supporting line [m].
+double edgeSpacingXY(const StairEdge& a, const StairEdge& b);
+
+}  // namespace stairmap
