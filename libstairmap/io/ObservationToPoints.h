@@ -30,7 +30,7 @@ struct ObservationConversionParams {
 /// Result of converting one observation.
 struct ObservationPoints {
     bool convertible = false;          ///< false: the type cannot be turned into 3D points
-    std::string type_name;             ///< MRPT class name, MRPT class name as registered, e.g. "mrpt::obs::CObservationPointCloud"
+    std::string type_name;             ///< MRPT class name as registered, e.g. "mrpt::obs::CObservationPointCloud"
     std::string reason;                ///< why not convertible (empty when convertible)
     PointCloud points_robot;           ///< [m] robot frame (x forward, y left, z up)
     std::size_t dropped_non_finite = 0;  ///< points dropped for NaN/Inf coordinates
