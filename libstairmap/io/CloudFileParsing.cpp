@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <istream>
 #include <ostream>
 #include <stdexcept>
@@ -83,6 +85,26 @@ void writeBinaryPoints(std::ostream& out, const PointCloud& cloud) {
 
 void checkWritten(const std::ostream& out) {
     if (!out.good()) throw std::runtime_error("write failed (disk full or I/O error?)");
+}
+
+double decodeLittleEndian(const char* bytes, char type, std::size_t size) {
+    // memcpy avoids unaligned reads; the host is little-endian like PCD/PLY binary data.
+    auto as = [bytes](auto value) { std::memcpy(&value, bytes, sizeof(value)); return static_cast<double>(value); };
+    if (type == 'F') return size == 4 ? as(float{}) : as(double{});
+    if (type == 'I') {
+        switch (size) {
+            case 1: return as(std::int8_t{});
+            case 2: return as(std::int16_t{});
+            case 4: return as(std::int32_t{});
+            default: return as(std::int64_t{});
+        }
+    }
+    switch (size) {
+        case 1: return as(std::uint8_t{});
+        case 2: return as(std::uint16_t{});
+        case 4: return as(std::uint32_t{});
+        default: return as(std::uint64_t{});
+    }
 }
 
 }  // namespace stairmap::io::detail

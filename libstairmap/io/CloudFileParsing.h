@@ -36,6 +36,10 @@ private:
     std::size_t num_read_ = 0;
 };
 
+/// Decodes one little-endian value: type 'I' signed / 'U' unsigned (size 1, 2, 4, 8) or
+/// 'F' floating point (size 4, 8).
+double decodeLittleEndian(const char* bytes, char type, std::size_t size);
+
 /// Reads exactly n bytes; false if the stream ends first.
 bool readExactly(std::istream& in, char* buffer, std::size_t n);
 

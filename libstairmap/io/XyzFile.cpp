@@ -49,6 +49,8 @@ PointCloud readXyz(std::istream& in) {
 }
 
 void writeXyz(std::ostream& out, const PointCloud& cloud) {
+    // The comment line keeps an empty cloud from becoming a zero-byte file (which reads as an error).
+    out << "# x y z [m], written by stairmap\n";
     for (const Eigen::Vector3f& p : cloud) detail::writeAsciiPoint(out, p);
     detail::checkWritten(out);
 }
