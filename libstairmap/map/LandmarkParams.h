@@ -25,6 +25,10 @@ struct LandmarkParams {
     double endpoint_tolerance_m = 0.06;  ///< [m] edge ends closer than this are averaged; a new end
                                          ///< farther out extends the edge (partial views)
     int confirm_observations = 3;        ///< [-] K: a landmark is confirmed once seen this many times
+    /// Lower bounds on a fused edge's uncertainty, so that a landmark seen many times can still
+    /// follow later (better) detections instead of freezing.
+    double fusion_min_sigma_m = 0.003;    ///< [m] perpendicular position of an edge
+    double fusion_min_sigma_deg = 0.2;    ///< [deg] edge orientation
     // --- [floors]
     double floor_merge_tolerance_m = 0.40;  ///< [m] heights within this belong to the same floor
     int floor_min_robot_samples = 10;  ///< [-] robot floor samples before a floor is reported
@@ -51,6 +55,10 @@ inline void validateLandmarkParams(const LandmarkParams& p) {
             "footprint_min_z_overlap_m", "must be in [0, 10) m");
     require(p.endpoint_tolerance_m >= 0 && p.endpoint_tolerance_m < 1, "endpoint_tolerance_m",
             "must be in [0, 1) m");
+    require(p.fusion_min_sigma_m > 0 && p.fusion_min_sigma_m < 1, "fusion_min_sigma_m",
+            "must be in (0, 1) m");
+    require(p.fusion_min_sigma_deg > 0 && p.fusion_min_sigma_deg < 45, "fusion_min_sigma_deg",
+            "must be in (0, 45) deg");
     require(p.confirm_observations >= 1 && p.confirm_observations <= 1000, "confirm_observations",
             "must be in [1, 1000]");
     require(p.floor_merge_tolerance_m > 0 && p.floor_merge_tolerance_m < 5,

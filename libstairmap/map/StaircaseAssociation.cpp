@@ -1,0 +1,157 @@
+#include "map/StaircaseAssociation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "map/StaircaseCanonical.h"
+
+namespace stairmap {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+constexpr double kDefaultRise = 0.15;  // [m] used only when a flight has a single step
+constexpr double kDefaultRun = 0.25;   // [m]
+
+double lineDistanceXy(const StairEdge& line, const Eigen::Vector3d& p) {
+    const Eigen::Vector2d d = (line.end - line.start).head<2>();
+    const double len = d.norm();
+    const Eigen::Vector2d v = (p - line.start).head<2>();
+    if (len < 1e-9) return v.norm();
+    return std::abs(d.x() * v.y() - d.y() * v.x()) / len;
+}
+
+/// Length of the overlap of b's projection onto a's direction with a itself.
+double overlapAlong(const StairEdge& a, const StairEdge& b) {
+    const Eigen::Vector2d d = (a.end - a.start).head<2>();
+    const double len = d.norm();
+    if (len < 1e-9) return 0.0;
+    const Eigen::Vector2d u = d / len;
+    const double s1 = (b.start - a.start).head<2>().dot(u);
+    const double s2 = (b.end - a.start).head<2>().dot(u);
+    return std::min(len, std::max(s1, s2)) - std::max(0.0, std::min(s1, s2));
+}
+
+double angleDiff(double a, double b) {
+    return std::abs(std::atan2(std::sin(a - b), std::cos(a - b)));
+}
+
+double rise(const Staircase& s) { return s.step_height > 0.0 ? s.step_height : kDefaultRise; }
+double run(const Staircase& s) { return s.step_depth > 0.0 ? s.step_depth : kDefaultRun; }
+
+using Polygon = std::vector<Eigen::Vector2d>;
+
+Polygon footprint(const Staircase& s) {
+    const Eigen::Vector2d half = 0.5 * run(s) * headingVector(s);
+    const StairEdge& lo = s.steps.front();
+    const StairEdge& hi = s.steps.back();
+    // Canonical edges run right (start) to left (end): this quad is counter-clockwise.
+    return {lo.start.head<2>() - half, hi.start.head<2>() + half, hi.end.head<2>() + half,
+            lo.end.head<2>() - half};
+}
+
+double signedArea(const Polygon& p) {
+    double a = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Eigen::Vector2d& u = p[i];
+        const Eigen::Vector2d& v = p[(i + 1) % p.size()];
+        a += u.x() * v.y() - v.x() * u.y();
+    }
+    return 0.5 * a;
+}
+
+double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+}
+
+/// Sutherland-Hodgman clipping of `subject` by the convex counter-clockwise `clip`.
+Polygon clipConvex(Polygon subject, const Polygon& clip) {
+    for (std::size_t i = 0; i < clip.size() && !subject.empty(); ++i) {
+        const Eigen::Vector2d& a = clip[i];
+        const Eigen::Vector2d& b = clip[(i + 1) % clip.size()];
+        Polygon out;
+        for (std::size_t j = 0; j < subject.size(); ++j) {
+            const Eigen::Vector2d& p = subject[j];
+            const Eigen::Vector2d& q = subject[(j + 1) % subject.size()];
+            const double cp = cross(a, b, p), cq = cross(a, b, q);
+            if (cp >= 0) out.push_back(p);
+            if ((cp >= 0) != (cq >= 0)) out.push_back(p + (q - p) * (cp / (cp - cq)));
+        }
+        subject = std::move(out);
+    }
+    return subject;
+}
+
+Polygon counterClockwise(Polygon p) {
+    if (signedArea(p) < 0) std::reverse(p.begin(), p.end());
+    return p;
+}
+
+}  // namespace
+
+bool sameStair(const StairEdge& a, const StairEdge& b, const LandmarkParams& params) {
+    if (std::abs(a.centre().z() - b.centre().z()) > params.match_height_m) return false;
+    const double dist = 0.5 * (lineDistanceXy(a, b.centre()) + lineDistanceXy(b, a.centre()));
+    if (dist > params.match_distance_m) return false;
+    double dalpha = std::abs(a.orientationRad() - b.orientationRad());
+    dalpha = std::min(dalpha, M_PI - dalpha);
+    if (dalpha > params.match_angle_deg * kDegToRad) return false;
+    const double needed =
+        std::min(params.min_edge_overlap_m, 0.5 * std::min(a.length(), b.length()));
+    return overlapAlong(a, b) >= needed;
+}
+
+bool headingsAgree(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
+    return angleDiff(a.heading_rad, b.heading_rad) <= params.heading_tolerance_deg * kDegToRad;
+}
+
+bool footprintsOverlap(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
+    const double za0 = a.steps.front().centre().z() - rise(a), za1 = a.steps.back().centre().z();
+    const double zb0 = b.steps.front().centre().z() - rise(b), zb1 = b.steps.back().centre().z();
+    if (std::min(za1, zb1) - std::max(za0, zb0) < params.footprint_min_z_overlap_m) return false;
+    const Polygon pa = counterClockwise(footprint(a));
+    const Polygon pb = counterClockwise(footprint(b));
+    const double smaller = std::min(std::abs(signedArea(pa)), std::abs(signedArea(pb)));
+    if (smaller < 1e-6) return false;
+    const Polygon inter = clipConvex(pb, pa);
+    if (inter.size() < 3) return false;
+    return std::abs(signedArea(inter)) >= params.footprint_min_overlap * smaller;
+}
+
+bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
+    if (a.steps.empty() || b.steps.empty() || !headingsAgree(a, b, params)) return false;
+    for (const StairEdge& ea : a.steps) {
+        for (const StairEdge& eb : b.steps) {
+            if (sameStair(ea, eb, params)) return true;
+        }
+    }
+    return params.use_footprint && footprintsOverlap(a, b, params);
+}
+
+int stepOffset(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
+    std::map<int, std::pair<int, double>> votes;  // shift -> (matches, summed height error)
+    for (std::size_t i = 0; i < b.steps.size(); ++i) {
+        for (std::size_t j = 0; j < a.steps.size(); ++j) {
+            if (!sameStair(a.steps[j], b.steps[i], params)) continue;
+            auto& v = votes[static_cast<int>(j) - static_cast<int>(i)];
+            v.first += 1;
+            v.second += std::abs(a.steps[j].centre().z() - b.steps[i].centre().z());
+        }
+    }
+    int best = 0;
+    std::pair<int, double> best_vote{0, 0.0};
+    for (const auto& [shift, vote] : votes) {
+        if (vote.first > best_vote.first ||
+            (vote.first == best_vote.first && vote.second < best_vote.second)) {
+            best = shift;
+            best_vote = vote;
+        }
+    }
+    if (best_vote.first > 0) return best;
+    // No common stair (footprint association): align the lowest edges by height.
+    const double dz = b.steps.front().centre().z() - a.steps.front().centre().z();
+    return static_cast<int>(std::lround(dz / rise(a)));
+}
+
+}  // namespace stairmap
+

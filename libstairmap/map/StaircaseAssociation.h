@@ -1,0 +1,33 @@
+#pragma once
+// Deciding whether two canonical world-frame staircases are the same flight, and how their steps
+// line up. Inputs must be canonical (map/StaircaseCanonical.h).
+
+#include <vector>
+
+#include "core/Staircase.h"
+#include "map/LandmarkParams.h"
+
+namespace stairmap {
+
+/// Definition 2 ("same stair"), with the xy distance taken between the LINES (perpendicular
+/// distance, symmetric mean), plus an overlap along the edge so that collinear edges of
+/// side-by-side flights stay apart.
+bool sameStair(const StairEdge& a, const StairEdge& b, const LandmarkParams& params);
+
+/// Uphill headings agree within params.heading_tolerance_deg.
+bool headingsAgree(const Staircase& a, const Staircase& b, const LandmarkParams& params);
+
+/// xy footprints (first to last edge, widened by half a run) overlap by at least
+/// params.footprint_min_overlap of the smaller one, and the height ranges
+/// [lowest edge - rise, highest edge] overlap by params.footprint_min_z_overlap_m.
+bool footprintsOverlap(const Staircase& a, const Staircase& b, const LandmarkParams& params);
+
+/// Headings agree and (some step pair is the same stair, or footprints overlap when enabled).
+bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams& params);
+
+/// Index shift k such that b.steps[i] corresponds to a.steps[i + k]: the shift most step
+/// matches vote for (ties: smallest summed height error), else the shift that best aligns the
+/// heights of the two flights.
+int stepOffset(const Staircase& a, const Staircase& b, const LandmarkParams& params);
+
+}  // namespace stairmap

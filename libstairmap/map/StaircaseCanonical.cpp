@@ -1,0 +1,89 @@
+#include "map/StaircaseCanonical.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace stairmap {
+namespace {
+
+bool isFinite(const Staircase& s) {
+    for (const StairEdge& e : s.steps) {
+        if (!e.start.allFinite() || !e.end.allFinite() || !e.cov_rho_theta.allFinite()) return false;
+    }
+    return std::isfinite(s.heading_rad) && std::isfinite(s.step_height) &&
+           std::isfinite(s.step_depth);
+}
+
+/// Length-weighted mean edge direction (edges have no sign: fold onto the first edge's).
+Eigen::Vector2d meanEdgeDirection(const Staircase& s) {
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    Eigen::Vector2d ref = Eigen::Vector2d::Zero();
+    for (const StairEdge& e : s.steps) {
+        Eigen::Vector2d d = (e.end - e.start).head<2>();
+        if (ref.squaredNorm() == 0.0) ref = d;
+        sum += (d.dot(ref) < 0.0) ? Eigen::Vector2d(-d) : d;
+    }
+    return sum;
+}
+
+void orientEdges(Staircase& s) {
+    const Eigen::Vector2d u = headingVector(s);
+    const Eigen::Vector2d left(-u.y(), u.x());
+    for (StairEdge& e : s.steps) {
+        if ((e.end - e.start).head<2>().dot(left) < 0.0) std::swap(e.start, e.end);
+    }
+}
+
+void updateHeading(Staircase& s) {
+    if (s.steps.size() < 2) return;  // a single edge cannot tell uphill from downhill
+    const Eigen::Vector2d d = meanEdgeDirection(s);
+    if (d.squaredNorm() < 1e-12) return;
+    Eigen::Vector2d normal(-d.y(), d.x());
+    const Eigen::Vector2d rise = (s.steps.back().centre() - s.steps.front().centre()).head<2>();
+    if (normal.dot(rise) < 0.0) normal = -normal;
+    s.heading_rad = std::atan2(normal.y(), normal.x());
+}
+
+}  // namespace
+
+Eigen::Vector2d headingVector(const Staircase& staircase) {
+    return {std::cos(staircase.heading_rad), std::sin(staircase.heading_rad)};
+}
+
+void updateCanonicalGeometry(Staircase& s) {
+    s.direction = StairDirection::Ascending;
+    if (s.steps.empty()) return;
+    updateHeading(s);
+    orientEdges(s);
+    const std::size_t k = s.steps.size();
+    double width = 0.0;
+    for (const StairEdge& e : s.steps) width += e.length();
+    s.step_width = width / static_cast<double>(k);
+    s.location = s.steps.front().centre();
+    if (k >= 2) {
+        const Eigen::Vector2d u = headingVector(s);
+        double depth = 0.0;
+        for (std::size_t i = 0; i + 1 < k; ++i) {
+            depth += (s.steps[i + 1].centre() - s.steps[i].centre()).head<2>().dot(u);
+        }
+        s.step_depth = depth / static_cast<double>(k - 1);
+        s.step_height = (s.steps.back().centre().z() - s.steps.front().centre().z()) /
+                        static_cast<double>(k - 1);
+    }
+    s.slope_rad = s.step_depth > 0.0 ? std::atan2(s.step_height, s.step_depth) : 0.0;
+}
+
+std::optional<Staircase> canonicalStaircase(const Staircase& staircase) {
+    if (staircase.steps.empty() || !isFinite(staircase)) return std::nullopt;
+    Staircase s = staircase;
+    // A descending staircase is seen from the top: its heading points downhill.
+    if (s.direction == StairDirection::Descending) s.heading_rad += M_PI;
+    s.heading_rad = std::atan2(std::sin(s.heading_rad), std::cos(s.heading_rad));
+    std::stable_sort(s.steps.begin(), s.steps.end(), [](const StairEdge& a, const StairEdge& b) {
+        return a.centre().z() < b.centre().z();
+    });
+    updateCanonicalGeometry(s);
+    return s;
+}
+
+}  // namespace stairmap

@@ -1,0 +1,27 @@
+#pragma once
+// The landmark map's canonical staircase form and its geometry, computed from the step edges.
+
+#include <optional>
+
+#include "core/Staircase.h"
+
+namespace stairmap {
+
+/// Canonical form of a staircase seen from either end: direction Ascending, steps sorted bottom to
+/// top by height, heading = uphill, each edge's start on the right and end on the left when
+/// facing uphill, geometry re-estimated (see updateCanonicalGeometry). Returns nullopt for a
+/// staircase with no steps or non-finite coordinates.
+std::optional<Staircase> canonicalStaircase(const Staircase& staircase);
+
+/// Re-estimates the geometry of a canonical staircase from its edges (paper Sec. III-C):
+/// heading from the length-weighted mean edge direction, oriented from the lowest to the highest
+/// edge; step_height = (z_top - z_bottom) / (k - 1); step_depth = mean xy advance between
+/// consecutive edges along the heading; step_width = mean edge length; slope = atan(h / d);
+/// location = centre of the lowest edge. With a single step, height/depth/heading are kept.
+/// Also orients every edge start-right / end-left.
+void updateCanonicalGeometry(Staircase& staircase);
+
+/// Unit uphill direction in the xy plane.
+Eigen::Vector2d headingVector(const Staircase& staircase);
+
+}  // namespace stairmap

@@ -1,0 +1,41 @@
+#include "map/StaircaseFusion.h"
+
+#include <algorithm>
+
+#include "map/EdgeFusion.h"
+#include "map/StaircaseCanonical.h"
+
+namespace stairmap {
+
+WeightedStaircase fuseStaircases(const WeightedStaircase& a, const WeightedStaircase& b,
+                                 int offset, const LandmarkParams& params) {
+    const int na = static_cast<int>(a.stairs.steps.size());
+    const int nb = static_cast<int>(b.stairs.steps.size());
+    // Never leave a gap of unseen steps between the two flights.
+    offset = std::clamp(offset, -nb, na);
+    const double uphill = a.stairs.heading_rad;
+    WeightedStaircase out;
+    out.stairs = a.stairs;
+    out.stairs.steps.clear();
+    for (int idx = std::min(0, offset); idx < std::max(na, offset + nb); ++idx) {
+        const int ib = idx - offset;
+        const bool in_a = idx >= 0 && idx < na;
+        const bool in_b = ib >= 0 && ib < nb;
+        if (in_a && in_b) {
+            const int wa = a.step_observations[idx], wb = b.step_observations[ib];
+            out.stairs.steps.push_back(
+                fuseEdges(a.stairs.steps[idx], wa, b.stairs.steps[ib], wb, uphill, params));
+            out.step_observations.push_back(wa + wb);
+        } else if (in_a) {
+            out.stairs.steps.push_back(a.stairs.steps[idx]);
+            out.step_observations.push_back(a.step_observations[idx]);
+        } else if (in_b) {
+            out.stairs.steps.push_back(b.stairs.steps[ib]);
+            out.step_observations.push_back(b.step_observations[ib]);
+        }
+    }
+    updateCanonicalGeometry(out.stairs);
+    return out;
+}
+
+}  // namespace stairmap
