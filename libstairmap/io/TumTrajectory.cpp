@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -14,11 +15,16 @@ namespace {
 std::string parseLine(const std::string& line, TimedPose& out) {
     std::istringstream ss(line);
     double v[8];
+    std::string token;
     for (int i = 0; i < 8; ++i) {
-        if (!(ss >> v[i])) return "expected 8 numbers 't tx ty tz qx qy qz qw'";
+        char* end = nullptr;
+        if (!(ss >> token)) return "expected 8 numbers 't tx ty tz qx qy qz qw'";
+        v[i] = std::strtod(token.c_str(), &end);  // strtod also reads nan/inf, rejected below
+        if (end != token.c_str() + token.size()) {
+            return "expected 8 numbers 't tx ty tz qx qy qz qw', got '" + token + "'";
+        }
     }
-    std::string extra;
-    if (ss >> extra) return "unexpected extra field '" + extra + "'";
+    if (ss >> token) return "unexpected extra field '" + token + "'";
     for (double x : v) {
         if (!std::isfinite(x)) return "non-finite value";
     }
