@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>
+
 namespace stairmap {
 namespace {
 
@@ -86,12 +88,18 @@ StairEdge fuseEdges(const StairEdge& a, int weight_a, const StairEdge& b, int we
     const double z = (wza * a.centre().z() + wzb * b.centre().z()) / (wza + wzb);
 
     StairEdge fused;
-    fused.start << foot + lo * t, z;
-    fused.end << foot + hi * t, z;
+    fused.start << foot + hi * t, z;  // start on the left when facing uphill
+    fused.end << foot + lo * t, z;
     fused.num_points = a.num_points + b.num_points;
     Eigen::Matrix2d J;  // (rho about origin) -> (rho about the world origin)
     J << 1.0, origin.dot(t), 0.0, 1.0;
     fused.cov_rho_theta = J * P * J.transpose();
+    // core/Staircase.h: the normal points from the origin to the line (rho >= 0); flipping the
+    // normal negates rho and only changes the sign of the cross term.
+    if (foot.dot(n) < 0.0) {
+        fused.cov_rho_theta(0, 1) = -fused.cov_rho_theta(0, 1);
+        fused.cov_rho_theta(1, 0) = -fused.cov_rho_theta(1, 0);
+    }
     return fused;
 }
 

@@ -13,8 +13,8 @@ namespace stairmap {
 /// the origin-independent part: var(rho | theta) (the perpendicular variance at the fit centroid,
 /// taken as the edge centre) and var(theta). End points: ends within
 /// params.endpoint_tolerance_m are averaged, an end farther out extends the edge (partial views).
-/// Height: inverse-variance weighted. The result's cov_rho_theta is about the world origin with
-/// the normal pointing along `uphill_rad`; start is the right end when facing uphill.
+/// Height: inverse-variance weighted. The result's cov_rho_theta is about the world origin in the
+/// rho >= 0 convention of core/Staircase.h; start is the left end when facing uphill.
 StairEdge fuseEdges(const StairEdge& a, int weight_a, const StairEdge& b, int weight_b,
                     double uphill_rad, const LandmarkParams& params);
 

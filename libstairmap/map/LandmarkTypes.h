@@ -10,8 +10,8 @@
 namespace stairmap {
 
 /// One staircase of the persistent map. `stairs` is in the WORLD frame and canonical whichever way
-/// it was seen: direction Ascending, steps ordered bottom to top, every edge's `start` on the right
-/// and `end` on the left when facing uphill, `location` = centre of the lowest edge (the nosing of
+/// it was seen: direction Ascending, steps ordered bottom to top, every edge's `start` on the left
+/// and `end` on the right when facing uphill (as core/Staircase.h), `location` = centre of the lowest edge (the nosing of
 /// the first tread), `heading_rad` = uphill direction (counter-clockwise from world +x).
 struct StaircaseLandmark {
     int id = -1;                      ///< stable, never reused (absorbed IDs stay retired)

@@ -45,7 +45,7 @@ Polygon footprint(const Staircase& s) {
     const Eigen::Vector2d half = 0.5 * run(s) * headingVector(s);
     const StairEdge& lo = s.steps.front();
     const StairEdge& hi = s.steps.back();
-    // Canonical edges run right (start) to left (end): this quad is counter-clockwise.
+    // Corners in order around the quad (made counter-clockwise by the caller).
     return {lo.start.head<2>() - half, hi.start.head<2>() + half, hi.end.head<2>() + half,
             lo.end.head<2>() - half};
 }

@@ -30,7 +30,7 @@ void orientEdges(Staircase& s) {
     const Eigen::Vector2d u = headingVector(s);
     const Eigen::Vector2d left(-u.y(), u.x());
     for (StairEdge& e : s.steps) {
-        if ((e.end - e.start).head<2>().dot(left) < 0.0) std::swap(e.start, e.end);
+        if ((e.end - e.start).head<2>().dot(left) > 0.0) std::swap(e.start, e.end);
     }
 }
 

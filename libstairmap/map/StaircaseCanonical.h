@@ -8,8 +8,8 @@
 namespace stairmap {
 
 /// Canonical form of a staircase seen from either end: direction Ascending, steps sorted bottom to
-/// top by height, heading = uphill, each edge's start on the right and end on the left when
-/// facing uphill, geometry re-estimated (see updateCanonicalGeometry). Returns nullopt for a
+/// top by height, heading = uphill, each edge's start on the left and end on the right when
+/// facing uphill (the convention of core/Staircase.h), geometry re-estimated (see updateCanonicalGeometry). Returns nullopt for a
 /// staircase with no steps or non-finite coordinates.
 std::optional<Staircase> canonicalStaircase(const Staircase& staircase);
 
@@ -18,7 +18,7 @@ std::optional<Staircase> canonicalStaircase(const Staircase& staircase);
 /// edge; step_height = (z_top - z_bottom) / (k - 1); step_depth = mean xy advance between
 /// consecutive edges along the heading; step_width = mean edge length; slope = atan(h / d);
 /// location = centre of the lowest edge. With a single step, height/depth/heading are kept.
-/// Also orients every edge start-right / end-left.
+/// Also orients every edge start-left / end-right.
 void updateCanonicalGeometry(Staircase& staircase);
 
 /// Unit uphill direction in the xy plane.
