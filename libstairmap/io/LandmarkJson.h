@@ -15,7 +15,9 @@
 // the lowest edge, heading = uphill, world frame. Lengths [m], angles [deg] unless named _rad.
 
 #include <iosfwd>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -54,15 +56,25 @@ LandmarkMapState loadLandmarkState(const std::string& path, LandmarkParams* para
 inline void saveLandmarkMapAtomic(const std::string& path, const LandmarkMap& map) {
     saveLandmarkStateAtomic(path, map.state(), map.params());
 }
+/// Builds a map from a loaded state; inconsistent content (e.g. duplicate ids) becomes
+/// std::runtime_error "<path>: <problem>".
+inline LandmarkMap landmarkMapFromState(const std::string& path, LandmarkMapState state,
+                                        const LandmarkParams& params) {
+    try {
+        return LandmarkMap(std::move(state), params);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
+}
 /// Continues a saved map with the given (current) parameters.
 inline LandmarkMap loadLandmarkMap(const std::string& path, const LandmarkParams& params) {
-    return LandmarkMap(loadLandmarkState(path), params);
+    return landmarkMapFromState(path, loadLandmarkState(path), params);
 }
 /// Continues a saved map with the parameters stored in it.
 inline LandmarkMap loadLandmarkMap(const std::string& path) {
     LandmarkParams stored;
     LandmarkMapState state = loadLandmarkState(path, &stored);
-    return LandmarkMap(std::move(state), stored);
+    return landmarkMapFromState(path, std::move(state), stored);
 }
 
 }  // namespace stairmap::io
