@@ -22,8 +22,9 @@ struct LandmarkParams {
     double footprint_min_overlap = 0.3;    ///< [-] xy overlap area / smaller footprint area
     double footprint_min_z_overlap_m = 0.10;  ///< [m] their height ranges must overlap by this
     // --- [landmarks] fusion and confirmation
-    double endpoint_tolerance_m = 0.06;  ///< [m] edge ends closer than this are averaged; a new end
-                                         ///< farther out extends the edge (partial views)
+    double endpoint_tolerance_m = 0.10;  ///< [m] edge ends closer than this are averaged; a new end
+                                         ///< farther out extends the edge (partial views). Keep it
+                                         ///< above ~4x the end point noise or outliers widen edges
     int confirm_observations = 3;        ///< [-] K: a landmark is confirmed once seen this many times
     /// Lower bounds on a fused edge's uncertainty, so that a landmark seen many times can still
     /// follow later (better) detections instead of freezing.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace stairmap {
 namespace {
@@ -56,9 +57,11 @@ void updateCanonicalGeometry(Staircase& s) {
     updateHeading(s);
     orientEdges(s);
     const std::size_t k = s.steps.size();
-    double width = 0.0;
-    for (const StairEdge& e : s.steps) width += e.length();
-    s.step_width = width / static_cast<double>(k);
+    // Median edge length: robust to a partially seen or spuriously extended edge.
+    std::vector<double> lengths;
+    for (const StairEdge& e : s.steps) lengths.push_back(e.length());
+    std::sort(lengths.begin(), lengths.end());
+    s.step_width = (k % 2) ? lengths[k / 2] : 0.5 * (lengths[k / 2 - 1] + lengths[k / 2]);
     s.location = s.steps.front().centre();
     if (k >= 2) {
         const Eigen::Vector2d u = headingVector(s);
