@@ -1,6 +1,12 @@
 // Frame math of the one observation -> robot-frame points conversion.
 #include <gtest/gtest.h>
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+#include <Eigen/Eigenvalues>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
@@ -93,4 +99,60 @@ TEST(ObservationToPoints, EmptyVelodyneScanIsEmpty) {
     EXPECT_TRUE(r.convertible);
     EXPECT_TRUE(r.points_robot.empty());
     EXPECT_TRUE(isConvertible3DObservation(velo));
+}
+
+// A real depth camera (320x240) looking at a bare floor, from MRPT's test data: a bare serialized
+// CSensoryFrame. The camera sits 1.27 m up, pitched ~73 deg down; in the robot frame the floor
+// must come out as a horizontal plane near z = 0, in front of the robot.
+namespace {
+mrpt::obs::CObservation3DRangeScan::Ptr readGroundRangeScan() {
+    mrpt::io::CFileGZInputStream f(std::string(STAIRMAP_SHARED_DIR) + "/data/real/test-3d-obs-ground.rawlog");
+    auto ar = mrpt::serialization::archiveFrom(f);
+    auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(ar.ReadObject());
+    if (!sf) return nullptr;
+    return sf->getObservationByClass<mrpt::obs::CObservation3DRangeScan>();
+}
+}  // namespace
+
+TEST(ObservationToPoints, RangeScanFloorIsLevelInRobotFrame) {
+    const auto obs = readGroundRangeScan();
+    ASSERT_TRUE(obs);
+    const ObservationPoints r = observationToRobotPoints(*obs);
+    ASSERT_TRUE(r.convertible);
+    ASSERT_GT(r.points_robot.size(), 10000u);
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& p : r.points_robot) mean += p.cast<double>();
+    mean /= double(r.points_robot.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const auto& p : r.points_robot) {
+        const Eigen::Vector3d d = p.cast<double>() - mean;
+        cov += d * d.transpose();
+    }
+    cov /= double(r.points_robot.size());
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    const Eigen::Vector3d normal = eig.eigenvectors().col(0);
+    EXPECT_GT(std::abs(normal.z()), 0.99) << normal.transpose();  // level within ~8 deg
+    EXPECT_LT(std::sqrt(eig.eigenvalues()(0)), 0.05);              // flat: < 5 cm rms
+    EXPECT_NEAR(mean.z(), 0.0, 0.05);                              // floor at the robot's feet
+    EXPECT_GT(mean.x(), 0.2);                                      // in front of the robot
+    EXPECT_LT(mean.x(), 2.0);
+}
+
+TEST(ObservationToPoints, RangeScanEqualsSensorPointsTimesSensorPose) {
+    const auto obs = readGroundRangeScan();
+    ASSERT_TRUE(obs);
+    const ObservationPoints r = observationToRobotPoints(*obs);
+    mrpt::maps::CSimplePointsMap sensor_map;
+    obs->unprojectInto(sensor_map);  // sensor frame (takeIntoAccountSensorPoseOnRobot = false)
+    ASSERT_EQ(sensor_map.size(), r.points_robot.size());
+    const auto H = obs->sensorPose.getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>();
+    for (std::size_t i = 0; i < sensor_map.size(); i += 97) {
+        float x, y, z;
+        sensor_map.getPoint(i, x, y, z);
+        Eigen::Vector3d expected;
+        for (int row = 0; row < 3; ++row) {
+            expected(row) = H(row, 0) * x + H(row, 1) * y + H(row, 2) * z + H(row, 3);
+        }
+        EXPECT_LT((r.points_robot[i].cast<double>() - expected).norm(), 1e-4) << i;
+    }
 }
