@@ -6,6 +6,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -53,8 +54,15 @@ PointCloud readRawlogCloud(const std::string& path) {
     auto archive = mrpt::serialization::archiveFrom(file);
     std::size_t num_objects = 0;
     try {
-        while (!file.checkEOF()) {
-            const auto object = archive.ReadObject();
+        while (true) {
+            const std::uint64_t position = file.getPosition();
+            mrpt::serialization::CSerializable::Ptr object;
+            try {
+                object = archive.ReadObject();
+            } catch (const mrpt::serialization::CExceptionEOF&) {
+                if (file.getPosition() == position) break;  // clean end between two objects
+                throw;
+            }
             ++num_objects;
             if (auto cloud = tryConvertObject(object)) return std::move(*cloud);
         }
