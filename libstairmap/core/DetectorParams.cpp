@@ -32,6 +32,7 @@ void DetectorParams::validate() const {
     requireRange(row_height_m, 0.005, 0.2, "row_height_m");
     requireRange(azimuth_bins, 36, 100000, "azimuth_bins");
     requireRange(edge_min_dz_m, 0.0, 1.0, "edge_min_dz_m");
+    requireRange(edge_spill_dz_m, 0.0, 1.0, "edge_spill_dz_m");
     requireRange(split_distance_m, 1e-4, 1.0, "split_distance_m");
     requireRange(min_line_points, 2, 100000, "min_line_points");
     requireRange(min_line_length_m, 0.0, 10.0, "min_line_length_m");
@@ -40,6 +41,7 @@ void DetectorParams::validate() const {
     requireRange(merge_chi2, 0.0, 1e6, "merge_chi2");
     requireRange(vertical_merge_dz_m, 0.0, 1.0, "vertical_merge_dz_m");
     requireRange(vertical_merge_dist_m, 0.0, 1.0, "vertical_merge_dist_m");
+    requireRange(max_collinear_gap_m, 0.0, 10.0, "max_collinear_gap_m");
     requireRange(floor_tolerance_m, 0.0, 1.0, "floor_tolerance_m");
     requireRange(floor_refine_window_m, 0.0, 2.0, "floor_refine_window_m");
     requireRange(floor_search_radius_m, 0.1, 100.0, "floor_search_radius_m");

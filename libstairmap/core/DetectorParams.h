@@ -16,6 +16,9 @@ struct DetectorParams {
     /// [m] a top-view cell is an edge candidate when its neighbour towards the robot is lower or
     /// higher by more than this (or empty). Below the minimum rise, above 2x the point noise.
     double edge_min_dz_m = 0.05;
+    /// [m] ...but not when the neighbour on the other side is higher than this: that column is the
+    /// top of a riser just below the real nosing (points spilled there by noise).
+    double edge_spill_dz_m = 0.025;
 
     // --- Segmentation (Sec. III-B) ---
     double split_distance_m = 0.03;   ///< [m] d_p of the iterative end-point fit
@@ -26,6 +29,8 @@ struct DetectorParams {
     double merge_chi2 = 9.21;         ///< [-] Mahalanobis gate to merge lines (chi2, 2 dof, 99 %)
     double vertical_merge_dz_m = 0.06;    ///< [m] lines of nearby rows closer in z are fused ...
     double vertical_merge_dist_m = 0.04;  ///< [m] ... when also this close in XY
+    /// [m] collinear pieces of one edge (e.g. interrupted by debris) are fused across this gap
+    double max_collinear_gap_m = 0.40;
 
     // --- Grouping (Sec. III-B, last paragraph) ---
     double floor_tolerance_m = 0.05;      ///< [m] lines within this of the floor are ground lines

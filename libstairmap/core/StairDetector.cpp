@@ -1,17 +1,151 @@
 #include "core/StairDetector.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "core/CylindricalRows.h"
+#include "core/FloorEstimation.h"
+#include "core/FloorNosing.h"
+#include "core/LineFusion.h"
+#include "core/RowSegmentation.h"
+#include "core/StairSearch.h"
+#include "core/StaircaseGeometry.h"
+#include "core/TopView.h"
+
 namespace stairmap {
+namespace {
+
+/// Floor height: the given one refined to the dominant level within +-window, or estimated.
+std::pair<double, bool> resolveFloor(const PointCloud& cloud, std::optional<double> floor_z,
+                                     const DetectorParams& p) {
+    FloorSearch s;
+    s.radius_m = p.floor_search_radius_m;
+    if (floor_z) {
+        s.z_lo = *floor_z - p.floor_refine_window_m;
+        s.z_hi = *floor_z + p.floor_refine_window_m;
+        return {dominantLevel(cloud, s).value_or(*floor_z), false};
+    }
+    s.z_lo = -p.max_depth_below_floor_m - 2.0;
+    s.z_hi = 0.3;  // the robot frame origin is on or above the floor it stands on
+    const auto level = dominantLevel(cloud, s);
+    return {level.value_or(-0.5), true};
+}
+
+SegmentationParams segmentationParams(const DetectorParams& p) {
+    SegmentationParams s;
+    s.split_distance_m = p.split_distance_m;
+    s.min_line_points = p.min_line_points;
+    s.min_line_length_m = p.min_line_length_m;
+    s.max_point_gap_m = p.max_point_gap_m;
+    s.point_sigma_m = p.point_sigma_m;
+    s.merge_chi2 = p.merge_chi2;
+    return s;
+}
+
+/// Lines of one kind of nosing (front drops for ascending, back drops for descending).
+std::vector<LineSegment> extractLines(const std::vector<TopViewCell>& cells, std::uint8_t flag,
+                                      double floor_z, const DetectorParams& p) {
+    CylindricalParams cp;
+    cp.z_lo = floor_z - p.max_depth_below_floor_m;
+    cp.z_hi = floor_z + p.max_height_above_floor_m;
+    cp.row_height_m = p.row_height_m;
+    cp.azimuth_bins = p.azimuth_bins;
+    CylindricalRows rows;
+    buildCylindricalRows(cells, flag, cp, rows);
+    std::vector<LineSegment> lines;
+    segmentRows(rows, segmentationParams(p), lines);
+    LineFusionParams fp;
+    fp.max_dz_m = p.vertical_merge_dz_m;
+    fp.max_distance_m = p.vertical_merge_dist_m;
+    fp.max_gap_m = p.max_collinear_gap_m;
+    fuseDuplicateLines(lines, fp);
+    return lines;
+}
+
+/// Builds a Staircase from its edges (z already real), oriented left -> right along the heading.
+Staircase makeStaircase(const std::vector<LineSegment>& edges, StairDirection dir) {
+    Staircase s;
+    s.direction = dir;
+    const Eigen::Vector2d heading = (edges.back().centre() - edges.front().centre()).normalized();
+    const Eigen::Vector2d left(-heading.y(), heading.x());
+    for (const LineSegment& l : edges) {
+        StairEdge e;
+        const bool start_is_left = left.dot(l.start - l.end) >= 0;
+        e.start << (start_is_left ? l.start : l.end), l.z;
+        e.end << (start_is_left ? l.end : l.start), l.z;
+        e.cov_rho_theta = l.cov;
+        e.num_points = l.num_points;
+        s.steps.push_back(e);
+    }
+    s.heading_rad = std::atan2(heading.y(), heading.x());
+    estimateGeometry(s);
+    return s;
+}
+
+/// Descending: prepends the floor's own edge (steps[0] by convention), measured one run before the
+/// first lower nosing when that one is a valid rise below the floor.
+void prependFloorNosing(const std::vector<TopViewCell>& cells, double floor_z,
+                        const DetectorParams& p, std::vector<LineSegment>& edges) {
+    const double drop = floor_z - edges.front().z;
+    if (drop < p.min_step_height_m || drop > p.max_step_height_m) return;
+    Staircase probe = makeStaircase(edges, StairDirection::Descending);
+    FloorNosingParams fp;
+    fp.floor_z = floor_z;
+    fp.z_tolerance_m = p.floor_tolerance_m;
+    const Eigen::Vector2d heading(std::cos(probe.heading_rad), std::sin(probe.heading_rad));
+    const auto nosing = measureFloorNosing(cells, edges.front(), heading, probe.step_depth, fp);
+    if (nosing) edges.insert(edges.begin(), *nosing);
+}
+
+void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, double floor_z,
+                     const DetectorParams& p, std::vector<Staircase>& out) {
+    const bool up = dir == StairDirection::Ascending;
+    std::vector<LineSegment> lines = extractLines(cells, up ? kFrontDrop : kBackDrop, floor_z, p);
+    if (!up) {
+        // Descending = ascending in mirrored z.
+        for (auto& l : lines) l.z = 2 * floor_z - l.z;
+        std::sort(lines.begin(), lines.end(),
+                  [](const LineSegment& a, const LineSegment& b) { return a.z < b.z; });
+    }
+    for (const auto& chain : searchStaircases(lines, floor_z, p.floor_tolerance_m, p)) {
+        std::vector<LineSegment> edges;
+        for (int idx : chain) {
+            edges.push_back(lines[idx]);
+            if (!up) edges.back().z = 2 * floor_z - edges.back().z;
+        }
+        if (!up) prependFloorNosing(cells, floor_z, p, edges);
+        out.push_back(makeStaircase(edges, dir));
+    }
+}
+
+}  // namespace
 
 StairDetector::StairDetector(const DetectorParams& params) : params_(params) {
     params_.validate();
 }
 
-// TODO(detector): pipeline being written (preprocessing, segmentation, Algorithm 1).
-DetectionResult StairDetector::detect(const PointCloud& /*cloud_robot*/,
+DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
                                       std::optional<double> floor_z) const {
     DetectionResult result;
-    result.floor_z = floor_z.value_or(0.0);
-    result.floor_estimated = !floor_z.has_value();
+    const auto [floor, estimated] = resolveFloor(cloud_robot, floor_z, params_);
+    result.floor_z = floor;
+    result.floor_estimated = estimated;
+    if (cloud_robot.empty()) return result;
+
+    TopViewParams tp;
+    tp.leaf_m = params_.leaf_size_m;
+    tp.max_range_m = params_.max_range_m;
+    tp.z_lo = floor - params_.max_depth_below_floor_m;
+    tp.z_hi = floor + params_.max_height_above_floor_m;
+    tp.edge_min_dz_m = params_.edge_min_dz_m;
+    tp.edge_spill_dz_m = params_.edge_spill_dz_m;
+    std::vector<TopViewCell> cells;
+    buildTopView(cloud_robot, tp, cells);
+
+    if (params_.detect_ascending)
+        detectDirection(cells, StairDirection::Ascending, floor, params_, result.staircases);
+    if (params_.detect_descending)
+        detectDirection(cells, StairDirection::Descending, floor, params_, result.staircases);
     return result;
 }
 

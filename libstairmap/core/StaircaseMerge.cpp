@@ -1,5 +1,6 @@
 #include "core/StaircaseMerge.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <map>

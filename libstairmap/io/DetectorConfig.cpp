@@ -78,6 +78,7 @@ void readPreprocessing(const SectionReader& r, DetectorParams& p) {
     r.number("row_height_m", p.row_height_m);
     r.integer("azimuth_bins", p.azimuth_bins);
     r.number("edge_min_dz_m", p.edge_min_dz_m);
+    r.number("edge_spill_dz_m", p.edge_spill_dz_m);
 }
 
 void readSegmentation(const SectionReader& r, DetectorParams& p) {
@@ -89,6 +90,7 @@ void readSegmentation(const SectionReader& r, DetectorParams& p) {
     r.number("merge_chi2", p.merge_chi2);
     r.number("vertical_merge_dz_m", p.vertical_merge_dz_m);
     r.number("vertical_merge_dist_m", p.vertical_merge_dist_m);
+    r.number("max_collinear_gap_m", p.max_collinear_gap_m);
     r.number("floor_tolerance_m", p.floor_tolerance_m);
     r.number("floor_refine_window_m", p.floor_refine_window_m);
     r.number("floor_search_radius_m", p.floor_search_radius_m);

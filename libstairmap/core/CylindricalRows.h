@@ -1,0 +1,33 @@
+#pragma once
+// Pre-processing, paper Sec. III-A, second step: organise the top-view columns into a cylindrical
+// array around the robot (rows = z bins, columns = azimuth bins over [-180, 180) deg) keeping the
+// point nearest to the robot per cell. Only nosing candidates (a TopViewFlag) enter, so a cell's
+// nearest point is a point of the nearest edge, not of the surface behind it.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/TopView.h"
+
+namespace stairmap {
+
+struct CylindricalParams {
+    double z_lo = -3.0;        ///< [m] bottom of row 0
+    double z_hi = 3.0;         ///< [m] top of the last row
+    double row_height_m = 0.025;  ///< [m]
+    int azimuth_bins = 1800;   ///< [-] over 360 deg
+};
+
+/// Rows of the array, each in azimuth order; points stored as structure of arrays.
+struct CylindricalRows {
+    std::vector<float> x, y, z;    ///< [m] kept points, grouped by row, ascending azimuth within a row
+    std::vector<int> azimuth;      ///< azimuth bin of each kept point
+    std::vector<int> row_begin;    ///< offsets of the non-empty rows into the point arrays (+ end)
+    int azimuth_bins = 0;
+};
+
+/// Fills `rows` from the cells having `flag`. Cost O(m log m) for m selected cells.
+void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
+                          const CylindricalParams& params, CylindricalRows& rows);
+
+}  // namespace stairmap

@@ -1,0 +1,43 @@
+#include "core/FloorEstimation.h"
+
+#include <cmath>
+#include <vector>
+
+namespace stairmap {
+
+std::optional<double> dominantLevel(const PointCloud& cloud, const FloorSearch& s) {
+    if (!(s.z_hi > s.z_lo) || !(s.bin_m > 0)) return std::nullopt;
+    const int bins = static_cast<int>(std::ceil((s.z_hi - s.z_lo) / s.bin_m)) + 1;
+    std::vector<int> hist(bins, 0);
+    const float r2 = static_cast<float>(s.radius_m * s.radius_m);
+    const float lo = static_cast<float>(s.z_lo), hi = static_cast<float>(s.z_hi);
+    const float inv_bin = static_cast<float>(1.0 / s.bin_m);
+    for (const auto& p : cloud) {
+        // Comparisons are false for NaN, so non-finite points drop out here.
+        if (!(p.z() >= lo && p.z() <= hi)) continue;
+        if (!(p.x() * p.x() + p.y() * p.y() <= r2)) continue;
+        ++hist[static_cast<int>((p.z() - lo) * inv_bin)];
+    }
+    int best = -1, best_count = 0;
+    for (int b = 0; b < bins; ++b) {
+        const int c = hist[b] + (b > 0 ? hist[b - 1] : 0) + (b + 1 < bins ? hist[b + 1] : 0);
+        if (c > best_count) {
+            best_count = c;
+            best = b;
+        }
+    }
+    if (best < 0 || best_count < s.min_support) return std::nullopt;
+    const double centre = s.z_lo + (best + 0.5) * s.bin_m;
+    double sum = 0.0;
+    int count = 0;
+    for (const auto& p : cloud) {
+        if (!(std::abs(p.z() - centre) <= 1.5 * s.bin_m)) continue;
+        if (!(p.x() * p.x() + p.y() * p.y() <= r2)) continue;
+        sum += p.z();
+        ++count;
+    }
+    if (count == 0) return centre;
+    return sum / count;
+}
+
+}  // namespace stairmap

@@ -1,0 +1,143 @@
+#include "core/RowSegmentation.h"
+
+#include <cmath>
+#include <utility>
+
+#include "core/LineFit.h"
+
+namespace stairmap {
+namespace {
+
+using Range = std::pair<int, int>;  // inclusive point indices
+
+struct RowBuffer {
+    std::vector<float> x, y, z;
+    RowPointView view() const { return {x.data(), y.data(), z.data()}; }
+};
+
+float gap2(const float* x, const float* y, int i, int j) {
+    const float dx = x[i] - x[j], dy = y[i] - y[j];
+    return dx * dx + dy * dy;
+}
+
+/// Iterative end-point fit on [first, last]: splits at the farthest point from the chord while it
+/// is farther than d_p. The split point goes to both halves so no end point is dropped.
+void splitChain(const RowBuffer& b, Range chain, double d_p, std::vector<Range>& out) {
+    std::vector<Range> stack{chain};
+    while (!stack.empty()) {
+        const Range r = stack.back();
+        stack.pop_back();
+        const double ax = b.x[r.first], ay = b.y[r.first];
+        double dx = b.x[r.second] - ax, dy = b.y[r.second] - ay;
+        const double len = std::hypot(dx, dy);
+        int worst = -1;
+        double worst_d = d_p;
+        for (int i = r.first + 1; i < r.second; ++i) {
+            const double px = b.x[i] - ax, py = b.y[i] - ay;
+            const double d = len > 1e-9 ? std::abs(px * dy - py * dx) / len : std::hypot(px, py);
+            if (d > worst_d) {
+                worst_d = d;
+                worst = i;
+            }
+        }
+        if (worst < 0) {
+            out.push_back(r);
+            continue;
+        }
+        stack.push_back({worst, r.second});  // processed after the left half: keeps order
+        stack.push_back({r.first, worst});
+    }
+}
+
+/// Fits every range and merges neighbours whose lines agree (paper: merging with the covariances).
+void fitAndMerge(const RowBuffer& b, const std::vector<Range>& parts, const SegmentationParams& p,
+                 std::vector<LineSegment>& lines) {
+    const RowPointView v = b.view();
+    bool have = false;
+    Range cur{};
+    LineSegment cur_fit;
+    auto flush = [&]() {
+        if (have && cur.second - cur.first + 1 >= p.min_line_points &&
+            cur_fit.length() >= p.min_line_length_m) {
+            lines.push_back(cur_fit);
+        }
+    };
+    for (const Range& r : parts) {
+        if (r.second - r.first + 1 < 2) continue;
+        const LineSegment f = fitLine(v, r.first, r.second, p.point_sigma_m);
+        if (have && r.first == cur.second && lineMahalanobis2(cur_fit, f) < p.merge_chi2) {
+            cur.second = r.second;
+            cur_fit = fitLine(v, cur.first, cur.second, p.point_sigma_m);
+            continue;
+        }
+        flush();
+        cur = r;
+        cur_fit = f;
+        have = true;
+    }
+    flush();
+}
+
+void segmentLinear(const RowBuffer& b, const SegmentationParams& p,
+                   std::vector<LineSegment>& lines) {
+    const int n = static_cast<int>(b.x.size());
+    const float max_gap2 = static_cast<float>(p.max_point_gap_m * p.max_point_gap_m);
+    std::vector<Range> parts;
+    int chain_start = 0;
+    for (int i = 1; i <= n; ++i) {
+        if (i < n && gap2(b.x.data(), b.y.data(), i - 1, i) <= max_gap2) continue;
+        if (i - chain_start >= p.min_line_points) splitChain(b, {chain_start, i - 1}, p.split_distance_m, parts);
+        else parts.push_back({chain_start, i - 1});  // too short to split; kept as a barrier
+        chain_start = i;
+    }
+    // Parts of different chains must not merge: fitAndMerge requires touching ranges.
+    fitAndMerge(b, parts, p, lines);
+}
+
+void rotateInto(const float* x, const float* y, const float* z, int n, int start, RowBuffer& b) {
+    b.x.resize(n);
+    b.y.resize(n);
+    b.z.resize(n);
+    for (int k = 0; k < n; ++k) {
+        const int i = (start + k) % n;
+        b.x[k] = x[i];
+        b.y[k] = y[i];
+        b.z[k] = z[i];
+    }
+}
+
+}  // namespace
+
+void segmentCircularRow(const float* x, const float* y, const float* z, int n,
+                        const SegmentationParams& p, std::vector<LineSegment>& lines) {
+    if (n < p.min_line_points) return;
+    const float max_gap2 = static_cast<float>(p.max_point_gap_m * p.max_point_gap_m);
+    // Start the row just after a gap so that no line straddles the start (the +-180 deg seam).
+    int start = -1;
+    for (int k = 0; k < n && start < 0; ++k) {
+        if (gap2(x, y, (k + n - 1) % n, k) > max_gap2) start = k;
+    }
+    RowBuffer b;
+    if (start >= 0) {
+        rotateInto(x, y, z, n, start, b);
+        segmentLinear(b, p, lines);
+        return;
+    }
+    // A closed ring without gaps: restart it at a corner found by a first split.
+    rotateInto(x, y, z, n, 0, b);
+    std::vector<Range> parts;
+    splitChain(b, {0, n - 1}, p.split_distance_m, parts);
+    rotateInto(x, y, z, n, parts.size() > 1 ? parts[1].first : 0, b);
+    segmentLinear(b, p, lines);
+}
+
+void segmentRows(const CylindricalRows& rows, const SegmentationParams& p,
+                 std::vector<LineSegment>& lines) {
+    for (std::size_t r = 0; r + 1 < rows.row_begin.size(); ++r) {
+        const int b = rows.row_begin[r];
+        const int n = rows.row_begin[r + 1] - b;
+        segmentCircularRow(rows.x.data() + b, rows.y.data() + b, rows.z.data() + b, n, p, lines);
+    }
+}
+
+}  // namespace stairmap

@@ -1,0 +1,43 @@
+#pragma once
+// Pre-processing, paper Sec. III-A, first step: voxel grid + top view. For every XY column of
+// leaf x leaf metres only the highest point is kept, so vertical planes (risers, walls) collapse
+// onto their top edge.
+// Then every column is classified against its radial neighbours (towards / away from the robot):
+// a nosing is where the surface drops by more than edge_min_dz_m (or ends). Up to 3 empty columns
+// (holes of a sparse cloud) are skipped when looking for the neighbour.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/PointCloud.h"
+
+namespace stairmap {
+
+enum TopViewFlag : std::uint8_t {
+    kFrontDrop = 1,  ///< the neighbour towards the robot is lower or empty (ascending nosing)
+    kBackDrop = 2,   ///< the neighbour away from the robot is lower or empty (descending nosing)
+};
+
+struct TopViewCell {
+    float x, y, z;        ///< [m] the highest point of the column
+    std::uint8_t flags;   ///< TopViewFlag bits
+};
+
+struct TopViewParams {
+    double leaf_m = 0.025;      ///< [m] column size
+    double max_range_m = 10.0;  ///< [m] XY range limit
+    double z_lo = -3.0;         ///< [m] points below are ignored
+    double z_hi = 3.0;          ///< [m] points above are ignored (ceilings)
+    double edge_min_dz_m = 0.05;  ///< [m] drop that makes a column a nosing candidate
+    /// [m] a candidate whose neighbour on the other side is higher than this is a riser top
+    /// just below the nosing (points spilled by noise) and is not a nosing
+    double edge_spill_dz_m = 0.025;
+};
+
+/// Builds the top view of `cloud` (robot frame, robot at the XY origin) and writes the columns that
+/// are nosing candidates (flags != 0) into `cells`, which is cleared first. Non-finite points are ignored. Cost: two passes over the cloud plus one over a
+/// flat XY array spanning the points' bounding box (no hashing, no sorting of points).
+void buildTopView(const PointCloud& cloud, const TopViewParams& params,
+                  std::vector<TopViewCell>& cells);
+
+}  // namespace stairmap
