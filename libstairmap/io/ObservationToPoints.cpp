@@ -6,6 +6,7 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 
 #include <cmath>
+#include <optional>
 
 #include "io/PoseConversion.h"
 #include "io/VelodyneDecoder.h"
@@ -67,16 +68,38 @@ VelodyneCalibrationTable velodyneTable(const CObservationVelodyneScan& obs, Velo
     return table;
 }
 
+// The packet's product id decides (0x21 HDL-32E, 0x22 VLP-16); packets without one (old
+// firmware) are identified by the size of the observation's calibration table.
+std::optional<VelodyneModel> velodyneModelOf(const CObservationVelodyneScan& obs) {
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(obs.scan_packets.data());
+    const std::uint8_t id = bytes[kVelodynePacketSize - 1];
+    if (id == 0x21) return VelodyneModel::HDL32;
+    if (id == 0x22) return VelodyneModel::VLP16;
+    if (id != 0) return std::nullopt;
+    const std::size_t lasers = obs.calibration.laser_corrections.size();
+    if (lasers == 32) return VelodyneModel::HDL32;
+    if (lasers == 16 || lasers == 0) return VelodyneModel::VLP16;
+    return std::nullopt;
+}
+
 void convertVelodyne(const CObservationVelodyneScan& obs, const ObservationConversionParams& params,
                      ObservationPoints& out) {
     if (obs.scan_packets.empty()) return;
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(obs.scan_packets.data());
-    const VelodyneModel model = velodyneModelFromPacket(bytes, VelodyneModel::VLP16);
+    const std::optional<VelodyneModel> model = velodyneModelOf(obs);
+    if (!model) {
+        out.convertible = false;
+        out.reason = "Velodyne model with product id " +
+                     std::to_string(int(bytes[kVelodynePacketSize - 1])) + " and " +
+                     std::to_string(obs.calibration.laser_corrections.size()) +
+                     " calibrated lasers is not supported (VLP-16 and HDL-32E are)";
+        return;
+    }
     VelodyneDecoderParams dec;
     dec.min_range_m = std::max<float>(params.velodyne_min_range_m, float(obs.minRange));
     dec.max_range_m = std::min<float>(params.velodyne_max_range_m, float(obs.maxRange));
     const PointCloud sensor_points =
-        decodeVelodynePackets(bytes, obs.scan_packets.size(), velodyneTable(obs, model), dec);
+        decodeVelodynePackets(bytes, obs.scan_packets.size(), velodyneTable(obs, *model), dec);
     appendTransformed(
         sensor_points.size(), [&](std::size_t i) { return sensor_points[i]; },
         toIsometry(obs.sensorPose), out);

@@ -8,6 +8,7 @@
 //   - CObservationVelodyneScan: raw packets decoded by our own VelodyneDecoder (all returns),
 //                               then sensorPose applied.
 //   - CObservation3DRangeScan: MRPT unprojectInto() with takeIntoAccountSensorPoseOnRobot=true.
+// A Velodyne scan of another model (not VLP-16 / HDL-32E) is not convertible, with the reason.
 // Everything else (CObservationRotatingScan: MRPT 2.5 stores no ring elevations; 2D range scans:
 // no use for stair detection; GPS, IMU, poses, ...) is "not convertible", with its class name.
 // Non-finite points are dropped and counted.

@@ -126,7 +126,22 @@ void RawlogScanSource::handleActions(const mrpt::obs::CActionCollection& actions
 
 void RawlogScanSource::handleScan(const mrpt::obs::CObservation& obs, double stamp_s) {
     const std::size_t scan_index = stats_.scans_read++;
-    ObservationPoints converted = observationToRobotPoints(obs, impl_->params.conversion);
+    ObservationPoints converted;
+    try {  // e.g. an externally stored cloud whose file is missing: skip this scan, go on
+        converted = observationToRobotPoints(obs, impl_->params.conversion);
+    } catch (const std::exception& e) {
+        converted.convertible = false;
+        converted.type_name = obs.GetRuntimeClass()->className;
+        converted.reason = shortReason(e);
+    }
+    if (!converted.convertible) {
+        ++stats_.conversion_failed;
+        if (impl_->warned_types.insert("failed " + converted.type_name).second) {
+            warn("scan index " + std::to_string(scan_index) + " (" + converted.type_name +
+                 ") skipped: " + converted.reason + " (further failures only counted)");
+        }
+        return;
+    }
     stats_.non_finite_dropped += converted.dropped_non_finite;
     Scan scan;
     scan.index = scan_index;

@@ -46,6 +46,7 @@ struct RawlogSourceStats {
     std::size_t scans_emitted = 0;      ///< scans returned by next()
     std::size_t skipped_no_pose = 0;    ///< scans dropped because no pose was available
     std::size_t skipped_label = 0;      ///< 3D observations with another sensor label
+    std::size_t conversion_failed = 0;  ///< 3D observations whose data could not be converted
     std::size_t robot_poses_read = 0;   ///< CObservationRobotPose entries
     std::size_t odometry_read = 0;      ///< CActionRobotMovement3D/2D increments composed
     std::size_t points_emitted = 0;     ///< points in emitted scans

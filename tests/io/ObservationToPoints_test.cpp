@@ -13,6 +13,7 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "io/ObservationToPoints.h"
@@ -155,4 +156,61 @@ TEST(ObservationToPoints, RangeScanEqualsSensorPointsTimesSensorPose) {
         }
         EXPECT_LT((r.points_robot[i].cast<double>() - expected).norm(), 1e-4) << i;
     }
+}
+
+namespace {
+// One synthetic packet: laser channel 0 at 10 m (HDL-32E: -30.67 deg; VLP-16: -15 deg), azimuth 0.
+mrpt::obs::CObservationVelodyneScan velodyneWithOneReturn(std::uint8_t product_id,
+                                                           std::size_t calibrated_lasers) {
+    mrpt::obs::CObservationVelodyneScan obs;
+    obs.scan_packets.resize(1);
+    auto* bytes = reinterpret_cast<std::uint8_t*>(&obs.scan_packets[0]);
+    std::memset(bytes, 0, 1206);
+    for (int b = 0; b < 12; ++b) {
+        bytes[b * 100] = 0xFF;
+        bytes[b * 100 + 1] = 0xEE;
+    }
+    bytes[4] = 5000 & 0xFF;  // block 0, channel 0: 5000 x 2 mm
+    bytes[5] = 5000 >> 8;
+    bytes[1204] = 0x37;
+    bytes[1205] = product_id;
+    obs.calibration.laser_corrections.resize(calibrated_lasers);
+    for (auto& l : obs.calibration.laser_corrections) {  // level beams: elevation 0
+        l.sinVertCorrection = 0;
+        l.cosVertCorrection = 1;
+    }
+    obs.minRange = 0.5;
+    obs.maxRange = 100;
+    return obs;
+}
+}  // namespace
+
+TEST(ObservationToPoints, VelodyneUsesSensorPoseAndObservationCalibration) {
+    auto obs = velodyneWithOneReturn(0x22, 16);
+    obs.sensorPose = mrpt::poses::CPose3D(0.3, 0, 0.8, 0, 0, 0);
+    const ObservationPoints r = observationToRobotPoints(obs);
+    ASSERT_TRUE(r.convertible) << r.reason;
+    ASSERT_EQ(r.points_robot.size(), 1u);
+    // Calibrated elevation 0 (not the datasheet's -15 deg): 10 m straight ahead, then + sensorPose.
+    EXPECT_NEAR(r.points_robot[0].x(), 10.3f, 1e-4);
+    EXPECT_NEAR(r.points_robot[0].y(), 0.0f, 1e-4);
+    EXPECT_NEAR(r.points_robot[0].z(), 0.8f, 1e-4);
+}
+
+TEST(ObservationToPoints, VelodyneModelFromCalibrationWhenPacketHasNoId) {
+    const auto obs = velodyneWithOneReturn(0x00, 32);  // old HDL-32E firmware: no product id
+    const ObservationPoints r = observationToRobotPoints(obs);
+    ASSERT_TRUE(r.convertible) << r.reason;
+    ASSERT_EQ(r.points_robot.size(), 1u);
+    // 32 calibrated lasers -> HDL-32E; channel 0 uses the observation's table (cos=1, sin=0).
+    EXPECT_NEAR(r.points_robot[0].z(), 0.0f, 1e-4);
+    EXPECT_NEAR(r.points_robot[0].x(), 10.0f, 1e-4);
+}
+
+TEST(ObservationToPoints, VelodyneOfUnknownModelIsNotConvertible) {
+    const auto obs = velodyneWithOneReturn(0x28, 32);  // VLP-32C product id
+    const ObservationPoints r = observationToRobotPoints(obs);
+    EXPECT_FALSE(r.convertible);
+    EXPECT_NE(r.reason.find("not supported"), std::string::npos) << r.reason;
+    EXPECT_TRUE(r.points_robot.empty());
 }
