@@ -32,7 +32,7 @@ struct LandmarkParams {
     double fusion_min_sigma_deg = 0.2;    ///< [deg] edge orientation
     // --- [floors]
     double floor_merge_tolerance_m = 0.40;  ///< [m] heights within this belong to the same floor
-    int floor_min_robot_samples = 10;  ///< [-] robot floor samples before a floor is reported
+    int floor_min_robot_samples = 5;   ///< [-] robot floor samples before a floor is reported
                                        ///< (samples taken while climbing stay below this)
 };
 
