@@ -94,15 +94,33 @@ void segmentLinear(const RowBuffer& b, const SegmentationParams& p,
     fitAndMerge(b, parts, p, lines);
 }
 
-void rotateInto(const float* x, const float* y, const float* z, int n, int start, RowBuffer& b) {
-    b.x.resize(n);
-    b.y.resize(n);
-    b.z.resize(n);
+/// Distance of point i to the chord through points a and b.
+float chordDistance(const float* x, const float* y, int a, int i, int b) {
+    const float dx = x[b] - x[a], dy = y[b] - y[a];
+    const float len = std::sqrt(dx * dx + dy * dy);
+    const float px = x[i] - x[a], py = y[i] - y[a];
+    return len > 1e-6f ? std::abs(px * dy - py * dx) / len : std::sqrt(px * px + py * py);
+}
+
+/// Copies the row starting at `start` (circularly), dropping single-point spikes: a point far
+/// from the chord of its two neighbours that are themselves close (an isolated noisy edge column
+/// behind the nosing would otherwise cut the line in two and cost it its end points).
+void rotateInto(const float* x, const float* y, const float* z, int n, int start, double d_p,
+                double max_gap, RowBuffer& b) {
+    b.x.clear();
+    b.y.clear();
+    b.z.clear();
+    const float max_gap2 = static_cast<float>(max_gap * max_gap);
     for (int k = 0; k < n; ++k) {
         const int i = (start + k) % n;
-        b.x[k] = x[i];
-        b.y[k] = y[i];
-        b.z[k] = z[i];
+        if (k > 0 && k + 1 < n) {
+            const int prev = (start + k - 1) % n, next = (start + k + 1) % n;
+            if (gap2(x, y, prev, next) <= max_gap2 && chordDistance(x, y, prev, i, next) > d_p)
+                continue;
+        }
+        b.x.push_back(x[i]);
+        b.y.push_back(y[i]);
+        b.z.push_back(z[i]);
     }
 }
 
@@ -119,16 +137,23 @@ void segmentCircularRow(const float* x, const float* y, const float* z, int n,
     }
     RowBuffer b;
     if (start >= 0) {
-        rotateInto(x, y, z, n, start, b);
+        rotateInto(x, y, z, n, start, p.split_distance_m, p.max_point_gap_m, b);
         segmentLinear(b, p, lines);
         return;
     }
     // A closed ring without gaps: restart it at a corner found by a first split.
-    rotateInto(x, y, z, n, 0, b);
+    rotateInto(x, y, z, n, 0, p.split_distance_m, p.max_point_gap_m, b);
     std::vector<Range> parts;
-    splitChain(b, {0, n - 1}, p.split_distance_m, parts);
-    rotateInto(x, y, z, n, parts.size() > 1 ? parts[1].first : 0, b);
-    segmentLinear(b, p, lines);
+    splitChain(b, {0, static_cast<int>(b.x.size()) - 1}, p.split_distance_m, parts);
+    const int shift = parts.size() > 1 ? parts[1].first : 0;
+    RowBuffer ring;
+    const int m = static_cast<int>(b.x.size());
+    for (int k = 0; k < m; ++k) {
+        ring.x.push_back(b.x[(shift + k) % m]);
+        ring.y.push_back(b.y[(shift + k) % m]);
+        ring.z.push_back(b.z[(shift + k) % m]);
+    }
+    segmentLinear(ring, p, lines);
 }
 
 void segmentRows(const CylindricalRows& rows, const SegmentationParams& p,

@@ -63,7 +63,10 @@ std::vector<LineSegment> extractLines(const std::vector<TopViewCell>& cells, std
 }
 
 /// Builds a Staircase from its edges (z already real), oriented left -> right along the heading.
-Staircase makeStaircase(const std::vector<LineSegment>& edges, StairDirection dir) {
+/// Each edge is lengthened by `end_margin` at both ends: its end points are points of the end
+/// columns, on average half a column inside the real end of the edge.
+Staircase makeStaircase(const std::vector<LineSegment>& edges, StairDirection dir,
+                        double end_margin) {
     Staircase s;
     s.direction = dir;
     const Eigen::Vector2d heading = (edges.back().centre() - edges.front().centre()).normalized();
@@ -71,8 +74,11 @@ Staircase makeStaircase(const std::vector<LineSegment>& edges, StairDirection di
     for (const LineSegment& l : edges) {
         StairEdge e;
         const bool start_is_left = left.dot(l.start - l.end) >= 0;
-        e.start << (start_is_left ? l.start : l.end), l.z;
-        e.end << (start_is_left ? l.end : l.start), l.z;
+        const Eigen::Vector2d a = start_is_left ? l.start : l.end;
+        const Eigen::Vector2d b = start_is_left ? l.end : l.start;
+        const Eigen::Vector2d u = (b - a).normalized();
+        e.start << a - end_margin * u, l.z;
+        e.end << b + end_margin * u, l.z;
         e.cov_rho_theta = l.cov;
         e.num_points = l.num_points;
         s.steps.push_back(e);
@@ -88,7 +94,7 @@ void prependFloorNosing(const std::vector<TopViewCell>& cells, double floor_z,
                         const DetectorParams& p, std::vector<LineSegment>& edges) {
     const double drop = floor_z - edges.front().z;
     if (drop < p.min_step_height_m || drop > p.max_step_height_m) return;
-    Staircase probe = makeStaircase(edges, StairDirection::Descending);
+    Staircase probe = makeStaircase(edges, StairDirection::Descending, 0.0);
     FloorNosingParams fp;
     fp.floor_z = floor_z;
     fp.z_tolerance_m = p.floor_tolerance_m;
@@ -114,7 +120,7 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
             if (!up) edges.back().z = 2 * floor_z - edges.back().z;
         }
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
-        out.push_back(makeStaircase(edges, dir));
+        out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }
 }
 
@@ -139,6 +145,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
     tp.z_hi = floor + params_.max_height_above_floor_m;
     tp.edge_min_dz_m = params_.edge_min_dz_m;
     tp.edge_spill_dz_m = params_.edge_spill_dz_m;
+    tp.edge_spill_max_dz_m = params_.min_step_height_m;
     std::vector<TopViewCell> cells;
     buildTopView(cloud_robot, tp, cells);
 

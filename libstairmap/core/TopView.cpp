@@ -62,23 +62,47 @@ void highestPoints(const PointCloud& cloud, const TopViewParams& p, const GridBo
     }
 }
 
-/// Grid offset (8-neighbourhood) of the radial direction away from the robot at (x, y).
-int radialOffset(float x, float y, int nx) {
-    constexpr float kTan22_5 = 0.41421356f;
-    const int ox = std::abs(x) > kTan22_5 * std::abs(y) ? (x > 0 ? 1 : -1) : 0;
-    const int oy = std::abs(y) > kTan22_5 * std::abs(x) ? (y > 0 ? 1 : -1) : 0;
-    return oy * nx + ox;
-}
-
 constexpr int kPad = 3;  ///< empty columns skipped (and grid padding) for the neighbour look-up
 
-/// Height of the first occupied column up to kPad cells along `offset` (empty columns of a sparse
-/// cloud are skipped); -inf when all are empty, which then counts as a drop.
-inline float neighbourZ(const ColumnTop* grid, int col, int offset) {
-    float z = grid[col + offset].z;
-    if (z == -std::numeric_limits<float>::infinity()) z = grid[col + 2 * offset].z;
-    if (z == -std::numeric_limits<float>::infinity()) z = grid[col + 3 * offset].z;
-    return z;
+/// Grid offsets of the columns 1..kPad leaves away from the robot along the exact radial direction
+/// at (x, y) (the opposite offsets go towards the robot). Returns false at the robot itself.
+bool radialOffsets(float x, float y, int nx, int (&offsets)[kPad]) {
+    const float r = std::sqrt(x * x + y * y);
+    if (r < 1e-6f) return false;
+    const float ux = x / r, uy = y / r;
+    for (int k = 0; k < kPad; ++k) {
+        offsets[k] = static_cast<int>(std::lround((k + 1) * uy)) * nx +
+                     static_cast<int>(std::lround((k + 1) * ux));
+    }
+    return true;
+}
+
+/// What lies next to a column along one radial direction.
+struct Neighbourhood {
+    bool drop = false;  ///< a lower surface (or nothing) follows
+    float first_z = -std::numeric_limits<float>::infinity();  ///< nearest occupied column
+};
+
+/// Walks up to kPad columns along the offsets (sign -1: towards the robot). Empty columns of a
+/// sparse cloud are skipped; nothing at all counts as a drop; a much higher column (a wall beside
+/// the edge's end) is looked past; a column at about the same level ends the walk without a drop.
+inline Neighbourhood inspect(const ColumnTop* grid, int col, const int (&offsets)[kPad], int sign,
+                             float z_drop, float z_wall) {
+    Neighbourhood n;
+    bool seen = false;
+    for (int k = 0; k < kPad; ++k) {
+        const float z = grid[col + sign * offsets[k]].z;
+        if (z == -std::numeric_limits<float>::infinity()) continue;
+        if (!seen) n.first_z = z;
+        seen = true;
+        if (z < z_drop) {
+            n.drop = true;
+            return n;
+        }
+        if (z < z_wall) return n;
+    }
+    n.drop = !seen;
+    return n;
 }
 
 }  // namespace
@@ -96,6 +120,7 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
     highestPoints(cloud, p, box, grid_store.data());
     const float min_dz = static_cast<float>(p.edge_min_dz_m);
     const float spill_dz = static_cast<float>(p.edge_spill_dz_m);
+    const float spill_max = static_cast<float>(p.edge_spill_max_dz_m);
     for (int iy = 0; iy < box.ny; ++iy) {
         // Direction from the robot, taken at the column centre (grid-aligned, no point noise).
         const float cy = box.y0 + (iy + 0.5f) / box.inv_leaf;
@@ -103,17 +128,21 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
             const ColumnTop& c = grid[col];
             if (c.z == -std::numeric_limits<float>::infinity()) continue;
             const float cx = box.x0 + (ix + 0.5f) / box.inv_leaf;
-            const int offset = radialOffset(cx, cy, box.nx);
+            int offsets[kPad];
+            const bool away = radialOffsets(cx, cy, box.nx, offsets);
             const float z_drop = c.z - min_dz;
             std::uint8_t flags = kFrontDrop | kBackDrop;  // at the robot itself: both
-            if (offset != 0) {
-                const float z_front = neighbourZ(grid, col, -offset);
-                const float z_back = neighbourZ(grid, col, offset);
-                // A drop on one side with a higher column on the other side is the top of a
-                // riser just below the real nosing (noise spill): not a nosing.
-                const float z_spill = c.z + spill_dz;
-                flags = (z_front < z_drop && !(z_back > z_spill) ? kFrontDrop : 0) |
-                        (z_back < z_drop && !(z_front > z_spill) ? kBackDrop : 0);
+            if (away) {
+                const float lo = c.z + spill_dz, hi = c.z + spill_max;
+                const Neighbourhood front = inspect(grid, col, offsets, -1, z_drop, hi);
+                const Neighbourhood back = inspect(grid, col, offsets, +1, z_drop, hi);
+                // A drop on one side with a slightly higher column on the other side is the top of
+                // a riser just below the real nosing (noise spill): not a nosing. A much higher
+                // column (a wall, the floor above) does not count.
+                const bool back_spill = back.first_z > lo && back.first_z < hi;
+                const bool front_spill = front.first_z > lo && front.first_z < hi;
+                flags = (front.drop && !back_spill ? kFrontDrop : 0) |
+                        (back.drop && !front_spill ? kBackDrop : 0);
             }
             if (flags != 0) cells.push_back({c.x, c.y, c.z, flags});
         }

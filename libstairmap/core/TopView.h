@@ -32,6 +32,7 @@ struct TopViewParams {
     /// [m] a candidate whose neighbour on the other side is higher than this is a riser top
     /// just below the nosing (points spilled by noise) and is not a nosing
     double edge_spill_dz_m = 0.025;
+    double edge_spill_max_dz_m = 0.11;  ///< [m] ...and lower than this (higher: a wall, a floor)
 };
 
 /// Builds the top view of `cloud` (robot frame, robot at the XY origin) and writes the columns that
