@@ -70,7 +70,8 @@ void saveLandmarkStateAtomic(const std::string& path, const LandmarkMapState& st
                              const LandmarkParams& params) {
     std::ostringstream text;
     writeLandmarkState(text, state, params);
-    const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    // One fixed temp name: a temp file left by a killed run is simply overwritten next time.
+    const std::string tmp = path + ".tmp";
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) {
         throw std::runtime_error(path + ": cannot create temporary file " + tmp + ": " +

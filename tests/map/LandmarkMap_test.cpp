@@ -220,3 +220,38 @@ TEST(LandmarkMap, InvalidParamsNameTheField) {
 
 }  // namespace
 }  // namespace stairmap
+
+namespace stairmap {
+namespace {
+
+TEST(LandmarkMap, BridgeOfPartialLandmarksGivesOneEdgePerStep) {
+    // Two landmarks of one flight whose step indices disagree (each saw a different first step)
+    // are joined: the result has one edge per physical step.
+    test::FlightTruth truth;
+    LandmarkParams params;
+    params.use_footprint = false;
+    LandmarkMap map(params);
+    std::mt19937 rng(31);
+    test::ViewSpec lower;
+    lower.first = 0;
+    lower.last = 4;
+    test::ViewSpec upper;
+    upper.first = 6;
+    upper.last = 9;
+    map.addDetection(test::makeDetection(truth, lower, rng), 0.0);
+    map.addDetection(test::makeDetection(truth, upper, rng), 1.0);
+    ASSERT_EQ(map.staircases().size(), 2u);
+    test::ViewSpec middle;
+    middle.first = 3;
+    middle.last = 7;
+    map.addDetection(test::makeDetection(truth, middle, rng), 2.0);
+    ASSERT_EQ(map.staircases().size(), 1u);
+    const Staircase& s = map.staircases()[0].stairs;
+    ASSERT_EQ(s.steps.size(), 10u);
+    for (int i = 0; i < 10; ++i) {
+        EXPECT_NEAR(s.steps[i].centre().z(), truth.edgeCentre(i).z(), 1e-6) << "step " << i;
+    }
+}
+
+}  // namespace
+}  // namespace stairmap
