@@ -13,6 +13,9 @@
 //   3. CActionRobotMovement3D (and 2D) increments composed from the origin (format #1), used only
 //      if the stream has no CObservationRobotPose at all.
 // A scan with no pose is skipped and counted, never guessed.
+// Scan::index is the scan's position among the 3D observations read (after the label filter), so
+// skipped scans leave gaps; Scan::stamp_s is the observation timestamp in UNIX seconds.
+// Memory: at most RobotPoseMatcherParams::max_pending (16) converted scans are held.
 // Observations that are neither 3D scans nor pose carriers are counted by class name and reported
 // once per type through the warning handler / messages(). The source never prints.
 
