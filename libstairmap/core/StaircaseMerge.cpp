@@ -24,8 +24,8 @@ double axialAngleDiff(double a, double b) {
 }
 
 Eigen::Matrix2d regularised(const Eigen::Matrix2d& cov) {
-    // Guard against singular or missing covariances (1 mm / 0.06 deg floor).
-    return cov + Eigen::Vector2d(1e-6, 1e-6).asDiagonal().toDenseMatrix();
+    // Guard against singular covariances (10 um / 6e-4 deg floor).
+    return cov + Eigen::Vector2d(1e-10, 1e-10).asDiagonal().toDenseMatrix();
 }
 
 /// Number of matching pairs when a[k] is aligned with b[k + offset].
