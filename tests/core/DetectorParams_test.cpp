@@ -1,0 +1,68 @@
+// Parameter validation: defaults are valid, every bad value is rejected naming its field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+
+#include "core/DetectorParams.h"
+#include "core/StairDetector.h"
+
+namespace stairmap {
+namespace {
+
+TEST(DetectorParams, DefaultsAreValidAndFollowThePaper) {
+    const DetectorParams p;
+    EXPECT_NO_THROW(p.validate());
+    EXPECT_DOUBLE_EQ(p.leaf_size_m, 0.025);
+    EXPECT_DOUBLE_EQ(p.min_step_height_m, 0.11);
+    EXPECT_DOUBLE_EQ(p.max_step_height_m, 0.30);
+    EXPECT_DOUBLE_EQ(p.min_step_depth_m, 0.15);
+    EXPECT_DOUBLE_EQ(p.max_step_depth_m, 0.45);
+    EXPECT_DOUBLE_EQ(p.min_slope_deg, 25.0);
+    EXPECT_DOUBLE_EQ(p.max_slope_deg, 60.0);
+    EXPECT_DOUBLE_EQ(p.max_parallel_deg, 10.0);
+    EXPECT_DOUBLE_EQ(p.init_height_factor, 2.5);
+}
+
+struct BadValue {
+    std::string field;
+    std::function<void(DetectorParams&)> spoil;
+};
+
+class RejectsBadValue : public testing::TestWithParam<BadValue> {};
+
+TEST_P(RejectsBadValue, NamesTheField) {
+    DetectorParams p;
+    GetParam().spoil(p);
+    try {
+        p.validate();
+        FAIL() << "accepted a bad " << GetParam().field;
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(GetParam().field), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(StairDetector{p}, std::invalid_argument);
+}
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+INSTANTIATE_TEST_SUITE_P(
+    Fields, RejectsBadValue,
+    testing::Values(BadValue{"leaf_size_m", [](DetectorParams& p) { p.leaf_size_m = 0.0; }},
+                    BadValue{"leaf_size_m", [](DetectorParams& p) { p.leaf_size_m = kNaN; }},
+                    BadValue{"azimuth_bins", [](DetectorParams& p) { p.azimuth_bins = 3; }},
+                    BadValue{"min_line_points", [](DetectorParams& p) { p.min_line_points = 1; }},
+                    BadValue{"max_step_height_m",
+                             [](DetectorParams& p) { p.max_step_height_m = 0.05; }},
+                    BadValue{"min_slope_deg", [](DetectorParams& p) { p.min_slope_deg = 70; }},
+                    BadValue{"point_sigma_m", [](DetectorParams& p) { p.point_sigma_m = -1; }},
+                    BadValue{"floor_tolerance_m",
+                             [](DetectorParams& p) { p.floor_tolerance_m = 0.2; }},
+                    BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }}),
+    [](const testing::TestParamInfo<BadValue>& param_info) {
+        return param_info.param.field + "_" + std::to_string(param_info.index);
+    });
+
+}  // namespace
+}  // namespace stairmap
