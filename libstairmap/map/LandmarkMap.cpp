@@ -85,22 +85,11 @@ LandmarkUpdate LandmarkMap::addDetection(const Staircase& detection_world, doubl
     }
     int index = 0;
     if (matches.empty()) {
-        StaircaseLandmark lm;
-        lm.id = state_.next_landmark_id++;
-        lm.stairs = *canonical;
-        lm.step_observations.assign(canonical->steps.size(), 1);
-        lm.first_seen_s = stamp_s;
-        state_.staircases.push_back(std::move(lm));
-        index = static_cast<int>(state_.staircases.size()) - 1;
+        index = createLandmark(*canonical, stamp_s);
         update.created = true;
     } else {
         index = matches.front();
-        StaircaseLandmark& lm = state_.staircases[index];
-        const WeightedStaircase det{*canonical, std::vector<int>(canonical->steps.size(), 1)};
-        WeightedStaircase fused =
-            fuseStaircases(weighted(lm), det, stepOffset(lm.stairs, *canonical, params_), params_);
-        lm.stairs = std::move(fused.stairs);
-        lm.step_observations = std::move(fused.step_observations);
+        fuseDetection(index, *canonical);
         // A detection that bridges landmarks joins them into the oldest (lowest id).
         for (auto it = matches.rbegin(); it + 1 != matches.rend(); ++it) {
             update.absorbed_ids.push_back(state_.staircases[*it].id);
@@ -119,6 +108,26 @@ LandmarkUpdate LandmarkMap::addDetection(const Staircase& detection_world, doubl
     }
     refreshFloors();
     return update;
+}
+
+int LandmarkMap::createLandmark(const Staircase& canonical, double stamp_s) {
+    StaircaseLandmark lm;
+    lm.id = state_.next_landmark_id++;
+    lm.stairs = canonical;
+    lm.step_observations.assign(canonical.steps.size(), 1);
+    lm.first_seen_s = stamp_s;
+    lm.last_seen_s = stamp_s;
+    state_.staircases.push_back(std::move(lm));
+    return static_cast<int>(state_.staircases.size()) - 1;
+}
+
+void LandmarkMap::fuseDetection(int index, const Staircase& canonical) {
+    StaircaseLandmark& lm = state_.staircases[index];
+    const WeightedStaircase det{canonical, std::vector<int>(canonical.steps.size(), 1)};
+    const int offset = stepOffset(lm.stairs, canonical, params_);
+    WeightedStaircase fused = fuseStaircases(weighted(lm), det, offset, params_);
+    lm.stairs = std::move(fused.stairs);
+    lm.step_observations = std::move(fused.step_observations);
 }
 
 int LandmarkMap::joinInto(int keep_index, int absorb_index) {

@@ -51,6 +51,8 @@ public:
     const LandmarkParams& params() const { return params_; }
 
 private:
+    int createLandmark(const Staircase& canonical, double stamp_s);  ///< returns its index
+    void fuseDetection(int index, const Staircase& canonical);
     int joinInto(int keep_index, int absorb_index);
     void joinOverlappingLandmarks(int index, LandmarkUpdate& update);
     void refreshFloors();
