@@ -1,14 +1,123 @@
-// TODO: placeholder, replaced by the real `stairmap eval`.
-#include <stdexcept>
+// `stairmap eval`: scores staircase detections against simulated ground truth (paper Tables I/II).
+//   stairmap eval --detect datasets/clouds          run the detector on every cloud with a .gt.json
+//   stairmap eval DET.json... [--gt gt.json]         score `stairmap detect` outputs / a landmarks.json
+// Matching rule and table columns: core/Evaluation.h and docs/simulator.md.
+
+#include <chrono>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "Commands.h"
+#include "core/Evaluation.h"
+#include "core/StairDetector.h"
+#include "io/CloudFile.h"
+#include "io/DetectorConfig.h"
+#include "io/EvalInputs.h"
+#include "io/EvalJson.h"
+#include "io/GroundTruthJson.h"
+#include "io/IniFile.h"
 
 namespace stairmap::apps {
 
+namespace {
+
+const char* kEvalHelp =
+    "Inputs are files or directories. With --detect they are clouds (.pcd/.ply/.xyz) each with a\n"
+    "<stem>.gt.json next to it (directories: every such cloud); the detector runs on each (floor\n"
+    "height from the truth unless --estimate-floor) and its run time is reported. Without --detect\n"
+    "they are detection JSON files (the output of `stairmap detect`, or a landmarks.json from\n"
+    "`stairmap map`), each scored against <stem>.gt.json next to it or against --gt.\n"
+    "A detection matches a true staircase of the same direction-as-seen when the median horizontal\n"
+    "distance of its edge centres to the nearest true nosing is < --max-xy and the median vertical\n"
+    "distance < --max-z; each truth is matched at most once; other detections are false positives.\n"
+    "Exit status: 0 on success, 2 on bad input (one line on stderr naming the file).";
+
+struct EvalOptions {
+    std::vector<std::string> inputs;
+    std::optional<std::string> gt_path;
+    bool run_detector = false;
+    bool estimate_floor = false;
+    std::string config_path;
+    bool json = false;
+    EvaluationParams params;
+};
+
+DetectorParams detectorParams(const std::string& config_path) {
+    if (config_path.empty()) return {};
+    const auto cfg = io::openIniFile(config_path);
+    try {
+        return io::loadDetectorConfig(*cfg, "detector").params;
+    } catch (const std::exception& e) {
+        throw std::runtime_error(config_path + ": " + e.what());
+    }
+}
+
+std::vector<EvaluationSample> detectSamples(const EvalOptions& options) {
+    const StairDetector detector(detectorParams(options.config_path));
+    std::vector<EvaluationSample> samples;
+    for (const auto& cloud_path : io::findCloudsWithTruth(options.inputs)) {
+        EvaluationSample sample;
+        sample.name = cloud_path;
+        const std::string gt = io::truthPathFor(cloud_path);
+        sample.truth = io::readGroundTruthFile(gt);
+        sample.kind = io::sampleKind(gt);
+        const PointCloud cloud = io::readCloudFile(cloud_path);
+        const std::optional<double> floor_z =
+            options.estimate_floor ? std::nullopt : sample.truth.observer_floor_z;
+        const auto start = std::chrono::steady_clock::now();
+        sample.detections = detector.detect(cloud, floor_z).staircases;
+        sample.time_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        samples.push_back(std::move(sample));
+    }
+    return samples;
+}
+
+int runEval(const EvalOptions& options) {
+    std::vector<EvaluationSample> samples;
+    if (options.run_detector) {
+        samples = detectSamples(options);
+    } else {
+        for (const auto& file : io::findDetectionFiles(options.inputs))
+            samples.push_back(io::loadDetectionSample(file, options.gt_path));
+    }
+    if (samples.empty()) throw std::runtime_error("no inputs with ground truth found");
+    const auto report = evaluate(samples, options.params);
+    if (options.json) {
+        std::cout << io::evaluationToJson(report, options.params).dump(1) << "\n";
+    } else {
+        std::cout << io::formatEvaluationTable(report);
+        for (const auto& s : report.samples) {
+            for (const auto& missed : s.missed) std::cout << "missed: " << s.name << " " << missed << "\n";
+            if (s.false_positives > 0)
+                std::cout << "false positives: " << s.name << " " << s.false_positives << "\n";
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
 Command addEvalCommand(CLI::App& app) {
+    auto options = std::make_shared<EvalOptions>();
     Command command;
-    command.cli = app.add_subcommand("eval", "(not implemented yet)");
-    command.run = []() -> int { throw std::runtime_error("'eval' is not implemented yet"); };
+    command.cli = app.add_subcommand("eval", "Score detections or a landmark map against gt.json");
+    command.cli->footer(kEvalHelp);
+    command.cli->add_option("inputs", options->inputs, "Detection JSONs, clouds (--detect) or directories")
+        ->required();
+    command.cli->add_flag("--detect", options->run_detector, "Run the detector on clouds first");
+    command.cli->add_option("--gt", options->gt_path, "Ground truth for every input (default: <stem>.gt.json)");
+    command.cli->add_flag("--estimate-floor", options->estimate_floor,
+                          "--detect: let the detector estimate the floor instead of using the truth's");
+    command.cli->add_option("--config", options->config_path, "INI file with a [detector] section");
+    command.cli->add_flag("--json", options->json, "Machine-readable JSON instead of the table");
+    command.cli->add_option("--max-xy", options->params.max_xy_m, "[m] matching: median xy distance")
+        ->check(CLI::PositiveNumber);
+    command.cli->add_option("--max-z", options->params.max_z_m, "[m] matching: median z distance")
+        ->check(CLI::PositiveNumber);
+    command.run = [options]() { return runEval(*options); };
     return command;
 }
 

@@ -91,6 +91,7 @@ void loadCloudSection(const IniFieldReader& ini, sim::SimulationConfig& config) 
     c.scans_per_cloud = ini.getInt(s, "scans_per_cloud", c.scans_per_cloud);
     c.jitter_xy_m = ini.getDouble(s, "jitter_xy_m", c.jitter_xy_m);
     c.jitter_yaw_deg = ini.getDouble(s, "jitter_yaw_deg", c.jitter_yaw_deg);
+    c.jitter_tilt_deg = ini.getDouble(s, "jitter_tilt_deg", c.jitter_tilt_deg);
     checked(ini, s, [&] { sim::validate(c); });
     config.cloud_extension = ini.getString(s, "format", "pcd");
     if (config.cloud_extension != "pcd" && config.cloud_extension != "ply" && config.cloud_extension != "xyz")

@@ -14,6 +14,8 @@ void validate(const CloudSampleParams& p) {
         throw std::invalid_argument("jitter_xy_m: must be in [0, 0.5] m");
     if (p.jitter_yaw_deg < 0 || p.jitter_yaw_deg > 10)
         throw std::invalid_argument("jitter_yaw_deg: must be in [0, 10] deg");
+    if (p.jitter_tilt_deg < 0 || p.jitter_tilt_deg > 10)
+        throw std::invalid_argument("jitter_tilt_deg: must be in [0, 10] deg");
 }
 
 PointCloud simulateRobotCloud(const Scene& scene, const Eigen::Isometry3d& T_world_robot,
@@ -28,9 +30,14 @@ PointCloud simulateRobotCloud(const Scene& scene, const Eigen::Isometry3d& T_wor
         if (k > 0) {  // the first scan is taken exactly at the sample pose
             T_robot_robotk.translation() << params.jitter_xy_m * gauss(rng),
                 params.jitter_xy_m * gauss(rng), 0.0;
-            T_robot_robotk.linear() =
-                Eigen::AngleAxisd(params.jitter_yaw_deg * M_PI / 180.0 * gauss(rng),
-                                  Eigen::Vector3d::UnitZ()).toRotationMatrix();
+            constexpr double kDeg = M_PI / 180.0;
+            const double yaw = params.jitter_yaw_deg * kDeg * gauss(rng);
+            const double pitch = params.jitter_tilt_deg * kDeg * gauss(rng);
+            const double roll = params.jitter_tilt_deg * kDeg * gauss(rng);
+            T_robot_robotk.linear() = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+                                       Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                                       Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                                          .toRotationMatrix();
         }
         const Eigen::Isometry3d T_robot_sensork = T_robot_robotk * T_robot_sensor;
         const auto scan = simulateScan(scene, T_world_robot * T_robot_sensork, sensor, rng,

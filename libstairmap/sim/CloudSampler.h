@@ -16,6 +16,8 @@ struct CloudSampleParams {
     int scans_per_cloud = 3;         ///< scans accumulated into one cloud
     double jitter_xy_m = 0.01;       ///< [m] std of the per-scan position wobble (true, known)
     double jitter_yaw_deg = 0.3;     ///< [deg] std of the per-scan heading wobble
+    double jitter_tilt_deg = 0.0;    ///< [deg] std of per-scan body pitch/roll (a legged robot's
+                                     ///< sway spreads the rings over the treads)
     double floor_tolerance_m = 0.05; ///< [m] observer floor vs stair bottom/top to set seen_as
 };
 

@@ -1,0 +1,22 @@
+#pragma once
+// Output of `stairmap eval`: the evaluation report as JSON and as a text table laid out like the
+// paper's Tables I and II (per kind: samples, detections, false positives, MAE of height, depth,
+// width and location in cm, time per detection in ms).
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/Evaluation.h"
+
+namespace stairmap::io {
+
+/// {"params":{...}, "kinds":[row...], "total":row, "samples":[{name, kind, expected, matched,
+///  false_positives, missed:[...], errors:[{height_cm, depth_cm, width_cm, location_cm}]}]}
+/// where row = {kind, clouds, samples, detections, false_positives, mae_height_cm, mae_depth_cm,
+/// mae_width_cm, mae_location_cm, mean_time_ms (null if unknown)}.
+nlohmann::json evaluationToJson(const EvaluationReport& report, const EvaluationParams& params);
+
+/// Fixed-width text table, one row per kind plus "all".
+std::string formatEvaluationTable(const EvaluationReport& report);
+
+}  // namespace stairmap::io
