@@ -2,7 +2,10 @@
 
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 #include <fstream>
 #include <iostream>
 #include <cstdlib>
@@ -41,6 +44,17 @@ private:
     std::streambuf* saved_;
 };
 
+std::uint64_t packKey(const octomap::OcTreeKey& k) {
+    return static_cast<std::uint64_t>(k[0]) | (static_cast<std::uint64_t>(k[1]) << 16) |
+           (static_cast<std::uint64_t>(k[2]) << 32);
+}
+
+octomap::OcTreeKey unpackKey(std::uint64_t k) {
+    return octomap::OcTreeKey(static_cast<octomap::key_type>(k & 0xFFFF),
+                              static_cast<octomap::key_type>((k >> 16) & 0xFFFF),
+                              static_cast<octomap::key_type>((k >> 32) & 0xFFFF));
+}
+
 }  // namespace
 
 VoxelMap::VoxelMap(const VoxelMapParams& params) : params_(params) {
@@ -67,15 +81,33 @@ void VoxelMap::insertEndpoints(const PointCloud& points_world, const Eigen::Vect
                                std::size_t& used) {
     // Discretise first: a voxel hit by 50 points of one scan gets one hit, not 50 (this is both the
     // downsampling and what keeps the occupancy update honest).
-    octomap::KeySet keys;
+    std::vector<std::uint64_t> keys;
+    keys.reserve(points_world.size());
     octomap::OcTreeKey key;
     for (const auto& p : points_world) {
         if (!usable(p, origin_world, params_.max_range_m)) continue;
         if (!tree_->coordToKeyChecked(p.x(), p.y(), p.z(), key)) continue;
-        keys.insert(key);
+        keys.push_back(packKey(key));
         ++used;
     }
-    for (const auto& k : keys) tree_->updateNode(k, true, /*lazy_eval=*/false);
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    // Lazy: only the leaves are touched here (inner nodes are refreshed once before any query or
+    // save). Leaves already clamped at the maximum occupancy cannot change in this mode, so a hash
+    // lookup replaces a 16-level tree descent for them (most of a static scene after a few scans).
+    const float clamp_max = tree_->getClampingThresMaxLog();
+    for (const std::uint64_t k : keys) {
+        if (saturated_.count(k) != 0) continue;
+        const octomap::OcTreeNode* node = tree_->updateNode(unpackKey(k), true, /*lazy_eval=*/true);
+        if (node != nullptr && node->getLogOdds() >= clamp_max) saturated_.insert(k);
+    }
+    inner_nodes_stale_ = true;
+}
+
+void VoxelMap::refreshInnerNodes() const {
+    if (!inner_nodes_stale_) return;
+    tree_->updateInnerOccupancy();
+    inner_nodes_stale_ = false;
 }
 
 void VoxelMap::insertRays(const PointCloud& points_world, const Eigen::Vector3d& origin_world,
@@ -93,11 +125,13 @@ void VoxelMap::insertRays(const PointCloud& points_world, const Eigen::Vector3d&
 }
 
 bool VoxelMap::isOccupied(const Eigen::Vector3d& p_world) const {
+    refreshInnerNodes();
     const octomap::OcTreeNode* node = tree_->search(p_world.x(), p_world.y(), p_world.z());
     return node != nullptr && tree_->isNodeOccupied(node);
 }
 
 PointCloud VoxelMap::occupiedVoxelCentres() const {
+    refreshInnerNodes();
     PointCloud centres;
     for (auto it = tree_->begin_leafs(), end = tree_->end_leafs(); it != end; ++it) {
         if (!tree_->isNodeOccupied(*it)) continue;
@@ -112,6 +146,7 @@ std::size_t VoxelMap::numLeaves() const { return tree_->getNumLeafNodes(); }
 std::size_t VoxelMap::memoryUsageBytes() const { return tree_->memoryUsage(); }
 
 void VoxelMap::writeBinary(std::ostream& out) const {
+    refreshInnerNodes();
     const QuietCerr quiet;
     if (!tree_->writeBinaryConst(out) || !out) {
         throw std::runtime_error("VoxelMap: writing the OctoMap binary stream failed");
@@ -119,6 +154,7 @@ void VoxelMap::writeBinary(std::ostream& out) const {
 }
 
 void VoxelMap::save(const std::string& path) const {
+    refreshInnerNodes();
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error(path + ": cannot open for writing");
     const QuietCerr quiet;

@@ -11,9 +11,11 @@
 
 #include <Eigen/Geometry>
 #include <cstddef>
+#include <cstdint>
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <unordered_set>
 
 #include "core/PointCloud.h"
 #include "map/VoxelMapParams.h"
@@ -58,6 +60,10 @@ public:
 private:
     VoxelMapParams params_;
     std::unique_ptr<octomap::OcTree> tree_;
+    std::unordered_set<std::uint64_t> saturated_;  ///< packed keys of leaves clamped occupied
+    mutable bool inner_nodes_stale_ = false;  ///< lazy leaf updates not yet propagated upwards
+
+    void refreshInnerNodes() const;
 
     void insertEndpoints(const PointCloud& points_world, const Eigen::Vector3d& origin_world,
                          std::size_t& used);
