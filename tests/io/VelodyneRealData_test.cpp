@@ -128,6 +128,7 @@ TEST(VelodyneRealData, RawlogRotationsAreThePcapPackets) {
     ASSERT_EQ(rawlog_packets.size(), 226u);
     std::size_t start = 0;
     while (start < packets.size() && std::memcmp(packets[start].data(), rawlog_packets[0], 1206) != 0) ++start;
+    EXPECT_EQ(start, 51u);  // the first full rotation of the capture (azimuth wraps at 51)
     ASSERT_LT(start + rawlog_packets.size(), packets.size() + 1);
     for (std::size_t i = 0; i < rawlog_packets.size(); ++i) {
         ASSERT_EQ(std::memcmp(packets[start + i].data(), rawlog_packets[i], 1206), 0) << i;
