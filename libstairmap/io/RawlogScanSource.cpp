@@ -103,25 +103,28 @@ void RawlogScanSource::emit(Scan scan) {
     impl_->ready.push_back(std::move(scan));
 }
 
+// One increment per action collection: the 3D movement if there is one, else the 2D odometry
+// (logs often carry both for the same motion; composing both would count it twice).
 void RawlogScanSource::handleActions(const mrpt::obs::CActionCollection& actions) {
+    std::optional<mrpt::poses::CPose3D> increment_3d, increment_2d;
     for (const auto& action : actions) {
-        std::optional<mrpt::poses::CPose3D> increment;
         if (const auto* a3 = dynamic_cast<const mrpt::obs::CActionRobotMovement3D*>(action.get())) {
-            increment = a3->poseChange.mean;
+            if (!increment_3d) increment_3d = a3->poseChange.mean;
         } else if (const auto* a2 =
                        dynamic_cast<const mrpt::obs::CActionRobotMovement2D*>(action.get())) {
-            if (a2->poseChange) increment = mrpt::poses::CPose3D(a2->poseChange->getMeanVal());
+            if (!increment_2d && a2->poseChange) {
+                increment_2d = mrpt::poses::CPose3D(a2->poseChange->getMeanVal());
+            }
+        } else {
+            const std::string type = action->GetRuntimeClass()->className;
+            countUnsupported(type, "action type '" + type + "' is not used");
         }
-        if (!increment) {
-            countUnsupported(action->GetRuntimeClass()->className,
-                             std::string("action type '") + action->GetRuntimeClass()->className +
-                                 "' is not used");
-            continue;
-        }
-        impl_->T_world_odom = impl_->T_world_odom * toIsometry(*increment);
-        impl_->have_odometry = true;
-        ++stats_.odometry_read;
     }
+    const auto& increment = increment_3d ? increment_3d : increment_2d;
+    if (!increment) return;
+    impl_->T_world_odom = impl_->T_world_odom * toIsometry(*increment);
+    impl_->have_odometry = true;
+    ++stats_.odometry_read;
 }
 
 void RawlogScanSource::handleScan(const mrpt::obs::CObservation& obs, double stamp_s) {

@@ -1,5 +1,6 @@
 // Streaming rawlog input: both formats, pose sources, skipped/unsupported counting, bad files.
 #include <gtest/gtest.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
 
@@ -101,6 +102,36 @@ TEST_P(RawlogCompression, FrameWithoutActionIsNotDropped) {
     const auto scans = readAll(src);
     ASSERT_EQ(scans.size(), 3u);
     EXPECT_TRUE(worldPoint(scans[2], 1).isApprox(Eigen::Vector3d(4, 0, 0.5), 1e-6));
+}
+
+TEST(RawlogScanSource, OdometryPrefers3DAndFallsBackTo2D) {
+    const std::string path = scratchDir() + "/odometry.rawlog";
+    {
+        RawlogWriter w(path, false);
+        for (int i = 0; i < 3; ++i) {
+            mrpt::obs::CActionCollection acts;
+            mrpt::obs::CActionRobotMovement2D move2d;
+            mrpt::obs::CActionRobotMovement2D::TMotionModelOptions opts;
+            move2d.computeFromOdometry(mrpt::poses::CPose2D(2.0, 0, 0), opts);  // 2 m per step
+            acts.insert(move2d);
+            if (i < 2) {  // the same step also as a 3D movement of 1 m: must win over the 2D one
+                mrpt::obs::CActionRobotMovement3D move3d;
+                move3d.poseChange.mean = CPose3D(1, 0, 0, 0, 0, 0);
+                acts.insert(move3d);
+            }
+            w << acts;
+            mrpt::obs::CSensoryFrame sf;
+            sf.insert(makeCloudObs(i, kSensorOnRobot, {{1, 0, 0}}));
+            w << sf;
+        }
+    }
+    RawlogScanSource src(path);
+    const auto scans = readAll(src);
+    ASSERT_EQ(scans.size(), 3u);
+    EXPECT_NEAR(scans[0].T_world_robot.translation().x(), 1.0, 1e-6);
+    EXPECT_NEAR(scans[1].T_world_robot.translation().x(), 2.0, 1e-6);
+    EXPECT_NEAR(scans[2].T_world_robot.translation().x(), 4.0, 1e-6);  // + 2 m from 2D odometry
+    EXPECT_EQ(src.stats().odometry_read, 3u);
 }
 
 INSTANTIATE_TEST_SUITE_P(PlainAndGz, RawlogCompression, ::testing::Values(false, true),
