@@ -71,7 +71,9 @@ std::vector<TrajectorySample> sampleTrajectory(const TrajectoryParams& p) {
     const double dt = 1.0 / p.scan_rate_hz;
     std::size_t phase = 0;
     double phase_start = 0.0;
-    for (double t = 0.0; t <= total + 1e-9 && !phases.empty(); t += dt) {
+    const auto count = phases.empty() ? 0 : static_cast<std::size_t>(std::floor(total / dt + 1e-9)) + 1;
+    for (std::size_t k = 0; k < count; ++k) {
+        const double t = k * dt;  // index-based: no accumulated rounding
         while (phase + 1 < phases.size() && t > phase_start + phases[phase].duration_s) {
             phase_start += phases[phase].duration_s;
             ++phase;
