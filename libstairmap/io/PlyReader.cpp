@@ -63,6 +63,7 @@ void parseAsciiVertex(const std::vector<std::string_view>& words, const PlyHeade
 PointCloud readPlyAscii(std::istream& in, const PlyHeader& h) {
     std::string line;
     for (std::size_t e = 0; e < h.vertex_element; ++e) {  // elements before the vertices: one line each
+        if (h.elements[e].properties.empty()) continue;  // no data at all
         for (std::size_t i = 0; i < h.elements[e].count; ++i) {
             if (nextWords(in, line).empty()) truncated(h.elements[e], i);
         }
@@ -111,6 +112,7 @@ bool readBinaryEntry(std::istream& in, const PlyElement& e, const std::size_t* x
 PointCloud readPlyBinary(std::istream& in, const PlyHeader& h) {
     double unused[3];
     for (std::size_t e = 0; e < h.vertex_element; ++e) {
+        if (h.elements[e].properties.empty()) continue;  // no data at all, whatever its count
         for (std::size_t i = 0; i < h.elements[e].count; ++i) {
             if (!readBinaryEntry(in, h.elements[e], nullptr, unused)) truncated(h.elements[e], i);
         }

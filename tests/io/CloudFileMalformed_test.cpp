@@ -112,6 +112,11 @@ TEST(CloudFileMalformed, PlyProblems) {
     expectFileError("text.ply", ascii3 + "1 2 3\n4 5 six\n7 8 9\n", "vertex 1: 'six' is not a number");
     expectFileError("cols.ply", ascii3 + "1 2 3\n4 5 6 7\n7 8 9\n", "vertex 1: expected 3 values, found 4");
     expectFileError("trunc.ply", kPlyBinaryHeader3 + floats({1, 2, 3, 4, 5, 6, 7, 8}), "truncated data");
+    // A huge element without properties holds no data: it must neither hang nor be mistaken for data.
+    expectFileError("huge_empty_element.ply",
+                    "ply\nformat binary_little_endian 1.0\nelement junk 18446744073709551615\nelement vertex 3\n"
+                    "property float x\nproperty float y\nproperty float z\nend_header\n" + floats({1, 2, 3}),
+                    "truncated data: element 'vertex' declares 3");
     expectFileError("inf.ply", ascii3 + "inf 1 1\n1 -inf 1\nnan nan nan\n", "contains no finite points");
 }
 
