@@ -109,6 +109,7 @@ pipeline::SchedulingParams loadSchedulingParams(const mrpt::config::CConfigFileB
     r.number("window_s", p.window_s, 1e-6, kHuge);
     r.number("submap_radius_m", p.submap_radius_m, 0.1, 1000.0);
     r.number("submap_leaf_m", p.submap_leaf_m, -1.0, 1.0);
+    r.number("max_level_slope_deg", p.max_level_slope_deg, -1.0, 89.0);
     return p;
 }
 

@@ -32,6 +32,7 @@ Mapper::Mapper(const MapperParams& params, LandmarkMap landmarks)
       voxel_map_(params.map),
       window_(params.scheduling.window_scans, params.scheduling.window_s),
       scheduler_(params.scheduling),
+      level_guard_(params.scheduling.max_level_slope_deg),
       detector_(params.detector),
       landmarks_(std::move(landmarks)) {
     if (params_.map.insert_every_n_scans < 1) {
@@ -48,6 +49,9 @@ void Mapper::processScan(const Scan& scan) {
     insertIntoVoxelMap(points_world, scan);
     recordTrajectory(scan);
     window_.push(scan.stamp_s, std::move(points_world));
+    // On stairs the scheduler is not consulted, so its counters keep growing and the first scan
+    // back on level ground triggers a detection.
+    if (!level_guard_.update(scan.T_world_robot.translation())) return;
     if (scheduler_.update(scan.stamp_s, scan.T_world_robot)) detectAround(scan);
 }
 

@@ -11,6 +11,7 @@
 #include "core/StairDetector.h"
 #include "map/LandmarkMap.h"
 #include "map/VoxelMap.h"
+#include "pipeline/LevelGuard.h"
 #include "pipeline/MapperParams.h"
 #include "pipeline/MapperStats.h"
 #include "pipeline/Scheduler.h"
@@ -68,6 +69,7 @@ private:
     map::VoxelMap voxel_map_;
     ScanWindow window_;
     Scheduler scheduler_;
+    LevelGuard level_guard_;
     StairDetector detector_;
     LandmarkMap landmarks_;
     std::vector<TrajectorySample> trajectory_;

@@ -80,7 +80,8 @@ nlohmann::json mapperParamsToJson(const MapperParams& p) {
               {"window_scans", sc.window_scans},
               {"window_s", sc.window_s},
               {"submap_radius_m", sc.submap_radius_m},
-              {"submap_leaf_m", sc.submap_leaf_m}}}};
+              {"submap_leaf_m", sc.submap_leaf_m},
+              {"max_level_slope_deg", sc.max_level_slope_deg}}}};
 }
 
 }  // namespace stairmap::pipeline

@@ -30,6 +30,9 @@ struct SchedulingParams {
     double window_s = 2.0;     ///< [s] ... none older than this (relative to the newest scan)
     double submap_radius_m = 6.0;  ///< [m] horizontal radius of the detector's submap
     double submap_leaf_m = 0.02;   ///< [m] voxel downsampling of the submap (<= 0: off)
+    /// [deg] detection and robot floor samples are deferred while the robot's recent path is
+    /// steeper than this (climbing stairs or a ramp; <= 0: never deferred)
+    double max_level_slope_deg = 10.0;
 };
 
 struct MapperParams {
