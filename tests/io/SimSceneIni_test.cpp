@@ -1,0 +1,80 @@
+// Scene INI loading: every bundled scene builds; bad values name the file, section and key.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/SceneIni.h"
+
+namespace stairmap::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string writeIni(const std::string& name, const std::string& content) {
+    const auto dir = fs::path(STAIRMAP_TEST_TMP) / "sim_ini";
+    fs::create_directories(dir);
+    const auto path = (dir / name).string();
+    std::ofstream(path) << content;
+    return path;
+}
+
+TEST(SimSceneIni, EveryBundledSceneLoads) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(STAIRMAP_SOURCE_DIR) / "config/scenes")) {
+        if (entry.path().extension() != ".ini") continue;
+        SCOPED_TRACE(entry.path().string());
+        const auto config = loadSimulationConfig(entry.path().string());
+        EXPECT_FALSE(config.scene.primitives().empty());
+        EXPECT_TRUE(!config.robots.empty() || !config.cloud_poses.empty());
+        ++count;
+    }
+    EXPECT_GE(count, 13);
+}
+
+TEST(SimSceneIni, StraightStairKeysReachTheGenerator) {
+    const auto path = writeIni("stair.ini",
+                               "[scene]\ntype = hollow\nname = h\n[stair]\nnum_risers = 6\nrise_m = 0.15\n"
+                               "run_m = 0.3\nwidth_m = 0.9\n[sensor]\nmodel = os1_64\nmount_pitch_deg = 10\n"
+                               "[clouds]\nposes = -2 0 0 0; -3 1 0 45\n");
+    const auto config = loadSimulationConfig(path);
+    EXPECT_EQ(config.kind, "hollow");
+    ASSERT_EQ(config.scene.truth().staircases.size(), 1u);
+    const auto& s = config.scene.truth().staircases[0];
+    EXPECT_EQ(s.num_risers, 6);
+    EXPECT_DOUBLE_EQ(s.rise_m, 0.15);
+    EXPECT_DOUBLE_EQ(s.width_m, 0.9);
+    EXPECT_EQ(config.sensor.elevations_deg.size(), 64u);
+    ASSERT_EQ(config.cloud_poses.size(), 2u);
+    EXPECT_DOUBLE_EQ(config.cloud_poses[1].yaw_deg, 45.0);
+    // Positive pitch tilts the sensor's x axis down.
+    EXPECT_LT((config.T_robot_sensor.linear() * Eigen::Vector3d::UnitX()).z(), -0.1);
+}
+
+void expectError(const std::string& content, const std::string& needle) {
+    const auto path = writeIni("bad.ini", content);
+    try {
+        loadSimulationConfig(path);
+        FAIL() << "expected an error containing " << needle;
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(path), std::string::npos) << what;
+        EXPECT_NE(what.find(needle), std::string::npos) << what;
+    }
+}
+
+TEST(SimSceneIni, BadValuesNameFileSectionAndKey) {
+    const std::string clouds = "[clouds]\nposes = 0 0 0 0\n";
+    expectError("[scene]\ntype = ascending\n[stair]\nrise_m = abc\n" + clouds, "[stair] rise_m");
+    expectError("[scene]\ntype = ascending\n[stair]\nrise_m = 3\n" + clouds, "rise_m");
+    expectError("[scene]\ntype = pyramid\n" + clouds, "[scene] type");
+    expectError("[scene]\ntype = ascending\n[sensor]\nmodel = vlp99\n" + clouds, "[sensor]");
+    expectError("[scene]\ntype = ascending\n[clouds]\nposes = 0 0 0\n", "[clouds] poses");
+    expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0\n", "[trajectory] waypoints");
+    expectError("[scene]\ntype = ascending\n", "neither a trajectory");
+    EXPECT_THROW(loadSimulationConfig("/nonexistent/scene.ini"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace stairmap::io
