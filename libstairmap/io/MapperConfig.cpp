@@ -8,6 +8,7 @@
 
 #include "io/DetectorConfig.h"
 #include "io/IniFile.h"
+#include "io/LandmarkConfig.h"
 
 namespace stairmap::io {
 namespace {
@@ -119,7 +120,7 @@ pipeline::MapperParams loadMapperParams(const mrpt::config::CConfigFileBase& cfg
     p.map = loadVoxelMapParams(cfg);
     p.scheduling = loadSchedulingParams(cfg);
     p.detector = loadDetectorConfig(cfg).params;
-    // TODO(landmarks): [landmarks] loader from io/LandmarkConfig.h once it lands.
+    p.landmarks = loadLandmarkParams(cfg);
     return p;
 }
 
