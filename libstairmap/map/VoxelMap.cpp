@@ -2,7 +2,11 @@
 
 #include <octomap/OcTree.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -31,17 +35,34 @@ bool usable(const Eigen::Vector3f& p, const Eigen::Vector3d& origin, double max_
     return (p.cast<double>() - origin).squaredNorm() <= max_range * max_range;
 }
 
-/// liboctomap (Debian build) chats on std::cerr while reading/writing; keep our stderr clean.
+/// liboctomap (Debian build) chats on std::cerr and with fprintf(stderr) while reading/writing
+/// .bt files; keep our stderr clean by parking both for the duration (single-threaded use).
 class QuietCerr {
 public:
-    QuietCerr() : saved_(std::cerr.rdbuf(sink_.rdbuf())) {}
-    ~QuietCerr() { std::cerr.rdbuf(saved_); }
+    QuietCerr() : saved_(std::cerr.rdbuf(sink_.rdbuf())) {
+        std::fflush(stderr);
+        saved_fd_ = ::dup(STDERR_FILENO);
+        const int null_fd = ::open("/dev/null", O_WRONLY);
+        if (null_fd >= 0) {
+            ::dup2(null_fd, STDERR_FILENO);
+            ::close(null_fd);
+        }
+    }
+    ~QuietCerr() {
+        std::fflush(stderr);
+        if (saved_fd_ >= 0) {
+            ::dup2(saved_fd_, STDERR_FILENO);
+            ::close(saved_fd_);
+        }
+        std::cerr.rdbuf(saved_);
+    }
     QuietCerr(const QuietCerr&) = delete;
     QuietCerr& operator=(const QuietCerr&) = delete;
 
 private:
     std::ostringstream sink_;
     std::streambuf* saved_;
+    int saved_fd_ = -1;
 };
 
 std::uint64_t packKey(const octomap::OcTreeKey& k) {
