@@ -17,6 +17,7 @@ void forEachLandmarkParam(Params& p, Visitor&& visit) {
     visit("landmarks", "use_footprint", p.use_footprint);
     visit("landmarks", "footprint_min_overlap", p.footprint_min_overlap);
     visit("landmarks", "footprint_min_z_overlap_m", p.footprint_min_z_overlap_m);
+    visit("landmarks", "max_extrapolated_steps", p.max_extrapolated_steps);
     visit("landmarks", "endpoint_tolerance_m", p.endpoint_tolerance_m);
     visit("landmarks", "confirm_observations", p.confirm_observations);
     visit("landmarks", "fusion_min_sigma_m", p.fusion_min_sigma_m);

@@ -124,8 +124,7 @@ int LandmarkMap::createLandmark(const Staircase& canonical, double stamp_s) {
 void LandmarkMap::fuseDetection(int index, const Staircase& canonical) {
     StaircaseLandmark& lm = state_.staircases[index];
     const WeightedStaircase det{canonical, std::vector<int>(canonical.steps.size(), 1)};
-    const int offset = stepOffset(lm.stairs, canonical, params_);
-    WeightedStaircase fused = fuseStaircases(weighted(lm), det, offset, params_);
+    WeightedStaircase fused = fuseStaircases(weighted(lm), det, params_);
     lm.stairs = std::move(fused.stairs);
     lm.step_observations = std::move(fused.step_observations);
 }
@@ -133,8 +132,7 @@ void LandmarkMap::fuseDetection(int index, const Staircase& canonical) {
 int LandmarkMap::joinInto(int keep_index, int absorb_index) {
     StaircaseLandmark absorbed = state_.staircases[absorb_index];
     StaircaseLandmark& keep = state_.staircases[keep_index];
-    const int offset = stepOffset(keep.stairs, absorbed.stairs, params_);
-    WeightedStaircase fused = fuseStaircases(weighted(keep), weighted(absorbed), offset, params_);
+    WeightedStaircase fused = fuseStaircases(weighted(keep), weighted(absorbed), params_);
     keep.stairs = std::move(fused.stairs);
     keep.step_observations = std::move(fused.step_observations);
     keep.observations += absorbed.observations;

@@ -21,6 +21,11 @@ struct LandmarkParams {
     bool use_footprint = true;             ///< also associate staircases whose footprints overlap
     double footprint_min_overlap = 0.3;    ///< [-] xy overlap area / smaller footprint area
     double footprint_min_z_overlap_m = 0.10;  ///< [m] their height ranges must overlap by this
+    /// Two partial views of one flight with no common step (one seen from the bottom, one from
+    /// the top) are joined when one continues the other: same rise/run (within 15 %), heading and
+    /// lateral extent, and the upper one's lowest edge lies where the lower one's edges,
+    /// extrapolated by whole steps, predict it (gates widened by 1 cm / 0.5 cm per step).
+    int max_extrapolated_steps = 12;  ///< [-] most unseen steps between them; 0 disables
     // --- [landmarks] fusion and confirmation
     double endpoint_tolerance_m = 0.10;  ///< [m] edge ends closer than this are averaged; a new end
                                          ///< farther out extends the edge (partial views). Keep it
@@ -54,6 +59,8 @@ inline void validateLandmarkParams(const LandmarkParams& p) {
             "must be in (0, 1]");
     require(p.footprint_min_z_overlap_m >= 0 && p.footprint_min_z_overlap_m < 10,
             "footprint_min_z_overlap_m", "must be in [0, 10) m");
+    require(p.max_extrapolated_steps >= 0 && p.max_extrapolated_steps <= 100,
+            "max_extrapolated_steps", "must be in [0, 100]");
     require(p.endpoint_tolerance_m >= 0 && p.endpoint_tolerance_m < 1, "endpoint_tolerance_m",
             "must be in [0, 1) m");
     require(p.fusion_min_sigma_m > 0 && p.fusion_min_sigma_m < 1, "fusion_min_sigma_m",

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "map/StaircaseCanonical.h"
 
@@ -87,6 +86,27 @@ Polygon counterClockwise(Polygon p) {
     return p;
 }
 
+/// `upper` continues `lower` (see LandmarkParams::max_extrapolated_steps).
+bool continuesFlight(const Staircase& lower, const Staircase& upper, const LandmarkParams& params) {
+    if (lower.steps.size() < 2 || upper.steps.size() < 2) return false;
+    const double rise_l = rise(lower), run_l = run(lower);
+    if (std::abs(rise(upper) - rise_l) > 0.15 * rise_l || std::abs(run(upper) - run_l) > 0.15 * run_l)
+        return false;
+    const StairEdge& top = lower.steps.back();
+    const StairEdge& next = upper.steps.front();
+    const long k = std::lround((next.centre().z() - top.centre().z()) / rise_l);
+    if (k < 1 || k > params.max_extrapolated_steps + 1) return false;
+    StairEdge predicted = top;
+    const Eigen::Vector2d shift = static_cast<double>(k) * run_l * headingVector(lower);
+    const Eigen::Vector3d offset(shift.x(), shift.y(), static_cast<double>(k) * rise_l);
+    predicted.start += offset;
+    predicted.end += offset;
+    LandmarkParams widened = params;
+    widened.match_height_m += 0.005 * static_cast<double>(k);
+    widened.match_distance_m += 0.01 * static_cast<double>(k);
+    return sameStair(predicted, next, widened);
+}
+
 }  // namespace
 
 bool sameStair(const StairEdge& a, const StairEdge& b, const LandmarkParams& params) {
@@ -125,32 +145,9 @@ bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams&
             if (sameStair(ea, eb, params)) return true;
         }
     }
-    return params.use_footprint && footprintsOverlap(a, b, params);
-}
-
-int stepOffset(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
-    std::map<int, std::pair<int, double>> votes;  // shift -> (matches, summed height error)
-    for (std::size_t i = 0; i < b.steps.size(); ++i) {
-        for (std::size_t j = 0; j < a.steps.size(); ++j) {
-            if (!sameStair(a.steps[j], b.steps[i], params)) continue;
-            auto& v = votes[static_cast<int>(j) - static_cast<int>(i)];
-            v.first += 1;
-            v.second += std::abs(a.steps[j].centre().z() - b.steps[i].centre().z());
-        }
-    }
-    int best = 0;
-    std::pair<int, double> best_vote{0, 0.0};
-    for (const auto& [shift, vote] : votes) {
-        if (vote.first > best_vote.first ||
-            (vote.first == best_vote.first && vote.second < best_vote.second)) {
-            best = shift;
-            best_vote = vote;
-        }
-    }
-    if (best_vote.first > 0) return best;
-    // No common stair (footprint association): align the lowest edges by height.
-    const double dz = b.steps.front().centre().z() - a.steps.front().centre().z();
-    return static_cast<int>(std::lround(dz / rise(a)));
+    if (params.use_footprint && footprintsOverlap(a, b, params)) return true;
+    return params.max_extrapolated_steps > 0 &&
+           (continuesFlight(a, b, params) || continuesFlight(b, a, params));
 }
 
 }  // namespace stairmap

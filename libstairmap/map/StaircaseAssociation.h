@@ -22,12 +22,8 @@ bool headingsAgree(const Staircase& a, const Staircase& b, const LandmarkParams&
 /// [lowest edge - rise, highest edge] overlap by params.footprint_min_z_overlap_m.
 bool footprintsOverlap(const Staircase& a, const Staircase& b, const LandmarkParams& params);
 
-/// Headings agree and (some step pair is the same stair, or footprints overlap when enabled).
+/// Headings agree and (some step pair is the same stair, or footprints overlap when enabled, or
+/// one continues the other along the flight, see LandmarkParams::max_extrapolated_steps).
 bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams& params);
-
-/// Index shift k such that b.steps[i] corresponds to a.steps[i + k]: the shift most step
-/// matches vote for (ties: smallest summed height error), else the shift that best aligns the
-/// heights of the two flights.
-int stepOffset(const Staircase& a, const Staircase& b, const LandmarkParams& params);
 
 }  // namespace stairmap

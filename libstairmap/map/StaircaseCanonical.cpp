@@ -45,6 +45,38 @@ void updateHeading(Staircase& s) {
     s.heading_rad = std::atan2(normal.y(), normal.x());
 }
 
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t k = v.size();
+    return (k % 2) ? v[k / 2] : 0.5 * (v[k / 2 - 1] + v[k / 2]);
+}
+
+/// Rise and run as least-squares slopes of edge height and of position along the heading
+/// against the step level. Levels come from the heights, so steps never seen (a gap between
+/// two partial views of one flight) do not bias the estimate.
+void fitRiseAndRun(Staircase& s) {
+    const std::size_t k = s.steps.size();
+    std::vector<double> dz;
+    for (std::size_t i = 0; i + 1 < k; ++i) {
+        dz.push_back(s.steps[i + 1].centre().z() - s.steps[i].centre().z());
+    }
+    const double rise0 = median(dz);
+    if (!(rise0 > 0.02)) return;  // not a staircase-like sequence: keep the previous values
+    const Eigen::Vector2d u = headingVector(s);
+    const double z0 = s.steps.front().centre().z();
+    double sl = 0, sz = 0, sp = 0, sll = 0, slz = 0, slp = 0;
+    for (const StairEdge& e : s.steps) {
+        const double level = std::round((e.centre().z() - z0) / rise0);
+        const double z = e.centre().z(), p = e.centre().head<2>().dot(u);
+        sl += level, sz += z, sp += p, sll += level * level, slz += level * z, slp += level * p;
+    }
+    const double n = static_cast<double>(k);
+    const double var = sll - sl * sl / n;
+    if (var <= 0.0) return;
+    s.step_height = (slz - sl * sz / n) / var;
+    s.step_depth = (slp - sl * sp / n) / var;
+}
+
 }  // namespace
 
 Eigen::Vector2d headingVector(const Staircase& staircase) {
@@ -60,19 +92,9 @@ void updateCanonicalGeometry(Staircase& s) {
     // Median edge length: robust to a partially seen or spuriously extended edge.
     std::vector<double> lengths;
     for (const StairEdge& e : s.steps) lengths.push_back(e.length());
-    std::sort(lengths.begin(), lengths.end());
-    s.step_width = (k % 2) ? lengths[k / 2] : 0.5 * (lengths[k / 2 - 1] + lengths[k / 2]);
+    s.step_width = median(lengths);
     s.location = s.steps.front().centre();
-    if (k >= 2) {
-        const Eigen::Vector2d u = headingVector(s);
-        double depth = 0.0;
-        for (std::size_t i = 0; i + 1 < k; ++i) {
-            depth += (s.steps[i + 1].centre() - s.steps[i].centre()).head<2>().dot(u);
-        }
-        s.step_depth = depth / static_cast<double>(k - 1);
-        s.step_height = (s.steps.back().centre().z() - s.steps.front().centre().z()) /
-                        static_cast<double>(k - 1);
-    }
+    if (k >= 2) fitRiseAndRun(s);
     s.slope_rad = s.step_depth > 0.0 ? std::atan2(s.step_height, s.step_depth) : 0.0;
 }
 

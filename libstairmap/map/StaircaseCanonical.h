@@ -15,8 +15,9 @@ std::optional<Staircase> canonicalStaircase(const Staircase& staircase);
 
 /// Re-estimates the geometry of a canonical staircase from its edges (paper Sec. III-C):
 /// heading from the length-weighted mean edge direction, oriented from the lowest to the highest
-/// edge; step_height = (z_top - z_bottom) / (k - 1); step_depth = mean xy advance between
-/// consecutive edges along the heading; step_width = median edge length; slope = atan(h / d);
+/// edge; step_height / step_depth = least-squares slopes of edge height / position along the
+/// heading against the step level (levels from the heights, so unseen steps in between are
+/// allowed); step_width = median edge length; slope = atan(h / d);
 /// location = centre of the lowest edge. With a single step, height/depth/heading are kept.
 /// Also orients every edge start-left / end-right.
 void updateCanonicalGeometry(Staircase& staircase);

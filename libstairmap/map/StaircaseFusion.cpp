@@ -1,6 +1,7 @@
 #include "map/StaircaseFusion.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "map/EdgeFusion.h"
 #include "map/StaircaseAssociation.h"
@@ -9,8 +10,23 @@
 namespace stairmap {
 namespace {
 
+constexpr double kDefaultRise = 0.15;  // [m] when a has a single step and no rise estimate
+
+/// Median height offset z_a - z_b over step pairs that are the same stair (pose drift in z).
+double heightShift(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
+    std::vector<double> dz;
+    for (const StairEdge& ea : a.steps) {
+        for (const StairEdge& eb : b.steps) {
+            if (sameStair(ea, eb, params)) dz.push_back(ea.centre().z() - eb.centre().z());
+        }
+    }
+    if (dz.empty()) return 0.0;
+    std::nth_element(dz.begin(), dz.begin() + static_cast<long>(dz.size() / 2), dz.end());
+    return dz[dz.size() / 2];
+}
+
 /// Keeps the steps ordered bottom to top and fuses neighbours that are the same stair
-/// (Definition 2), so that a misaligned fusion can never leave a doubled step behind.
+/// (Definition 2), so that a doubtful pairing can never leave a doubled step behind.
 void sortAndCollapse(WeightedStaircase& w, const LandmarkParams& params) {
     std::vector<std::size_t> order(w.stairs.steps.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -39,31 +55,32 @@ void sortAndCollapse(WeightedStaircase& w, const LandmarkParams& params) {
 }  // namespace
 
 WeightedStaircase fuseStaircases(const WeightedStaircase& a, const WeightedStaircase& b,
-                                 int offset, const LandmarkParams& params) {
-    const int na = static_cast<int>(a.stairs.steps.size());
-    const int nb = static_cast<int>(b.stairs.steps.size());
-    // Never leave a gap of unseen steps between the two flights.
-    offset = std::clamp(offset, -nb, na);
-    const double uphill = a.stairs.heading_rad;
-    WeightedStaircase out;
-    out.stairs = a.stairs;
-    out.stairs.steps.clear();
-    for (int idx = std::min(0, offset); idx < std::max(na, offset + nb); ++idx) {
-        const int ib = idx - offset;
-        const bool in_a = idx >= 0 && idx < na;
-        const bool in_b = ib >= 0 && ib < nb;
-        if (in_a && in_b) {
-            const int wa = a.step_observations[idx], wb = b.step_observations[ib];
-            out.stairs.steps.push_back(
-                fuseEdges(a.stairs.steps[idx], wa, b.stairs.steps[ib], wb, uphill, params));
-            out.step_observations.push_back(wa + wb);
-        } else if (in_a) {
-            out.stairs.steps.push_back(a.stairs.steps[idx]);
-            out.step_observations.push_back(a.step_observations[idx]);
-        } else if (in_b) {
-            out.stairs.steps.push_back(b.stairs.steps[ib]);
-            out.step_observations.push_back(b.step_observations[ib]);
+                                 const LandmarkParams& params) {
+    const double shift = heightShift(a.stairs, b.stairs, params);
+    const double half_rise = 0.5 * (a.stairs.step_height > 0.0 ? a.stairs.step_height : kDefaultRise);
+    WeightedStaircase out = a;
+    std::vector<bool> paired(a.stairs.steps.size(), false);
+    for (std::size_t j = 0; j < b.stairs.steps.size(); ++j) {
+        const StairEdge& eb = b.stairs.steps[j];
+        const double z = eb.centre().z() + shift;
+        int best = -1;
+        double best_dz = half_rise;
+        for (std::size_t i = 0; i < a.stairs.steps.size(); ++i) {
+            const double dz = std::abs(a.stairs.steps[i].centre().z() - z);
+            if (!paired[i] && dz < best_dz) {
+                best = static_cast<int>(i);
+                best_dz = dz;
+            }
         }
+        if (best < 0) {
+            out.stairs.steps.push_back(eb);
+            out.step_observations.push_back(b.step_observations[j]);
+            continue;
+        }
+        paired[best] = true;
+        out.stairs.steps[best] = fuseEdges(a.stairs.steps[best], a.step_observations[best], eb,
+                                           b.step_observations[j], a.stairs.heading_rad, params);
+        out.step_observations[best] += b.step_observations[j];
     }
     sortAndCollapse(out, params);
     updateCanonicalGeometry(out.stairs);

@@ -144,6 +144,7 @@ TEST(LandmarkMap, BridgingDetectionJoinsTwoLandmarksKeepingTheOlderId) {
     FlightTruth truth;
     LandmarkParams params;
     params.use_footprint = false;
+    params.max_extrapolated_steps = 0;  // so that the two partial views start apart
     LandmarkMap map(params);
     std::mt19937 rng(7);
     EXPECT_EQ(map.addDetection(makeDetection(truth, noisy(0, 2), rng), 0.0).landmark_id, 0);
@@ -230,6 +231,7 @@ TEST(LandmarkMap, BridgeOfPartialLandmarksGivesOneEdgePerStep) {
     test::FlightTruth truth;
     LandmarkParams params;
     params.use_footprint = false;
+    params.max_extrapolated_steps = 0;
     LandmarkMap map(params);
     std::mt19937 rng(31);
     test::ViewSpec lower;
@@ -251,6 +253,45 @@ TEST(LandmarkMap, BridgeOfPartialLandmarksGivesOneEdgePerStep) {
     for (int i = 0; i < 10; ++i) {
         EXPECT_NEAR(s.steps[i].centre().z(), truth.edgeCentre(i).z(), 1e-6) << "step " << i;
     }
+}
+
+}  // namespace
+}  // namespace stairmap
+
+namespace stairmap {
+namespace {
+
+TEST(LandmarkMap, BottomAndTopViewsWithoutCommonStepJoinWhenOneContinuesTheOther) {
+    test::FlightTruth truth;
+    truth.num_steps = 16;
+    truth.heading_rad = 0.9;
+    LandmarkMap map;
+    std::mt19937 rng(32);
+    test::ViewSpec bottom = noisy(0, 4);
+    test::ViewSpec top = noisy(10, 15);
+    top.descending = true;
+    map.addDetection(test::makeDetection(truth, bottom, rng), 0.0);
+    const LandmarkUpdate u = map.addDetection(test::makeDetection(truth, top, rng), 1.0);
+    EXPECT_FALSE(u.created);
+    ASSERT_EQ(map.staircases().size(), 1u);
+    EXPECT_EQ(map.staircases()[0].stairs.steps.size(), 11u);
+    EXPECT_NEAR(map.staircases()[0].stairs.step_height, truth.rise, 0.005);
+}
+
+TEST(LandmarkMap, FlightAfterALandingStaysSeparate) {
+    // Straight run: flight A, a 1.2 m landing, flight B continuing in the same direction.
+    test::FlightTruth a;
+    a.num_steps = 8;
+    test::FlightTruth b = a;
+    b.floor_z = a.topZ();
+    b.origin_xy = a.edgeCentre(a.num_steps - 1).head<2>() + (1.2 + a.run) * a.uphill();
+    LandmarkMap map;
+    std::mt19937 rng(33);
+    for (int k = 0; k < 3; ++k) {
+        map.addDetection(test::makeDetection(a, noisy(0, 7), rng), k);
+        map.addDetection(test::makeDetection(b, noisy(0, 7), rng), k);
+    }
+    EXPECT_EQ(map.staircases().size(), 2u);
 }
 
 }  // namespace

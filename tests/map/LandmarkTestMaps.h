@@ -52,6 +52,7 @@ inline std::vector<Staircase> robotDetections(unsigned seed, bool second_robot =
 inline LandmarkMap buildTestMap() {
     LandmarkParams params;
     params.use_footprint = false;  // so that two partial views of one flight start apart
+    params.max_extrapolated_steps = 0;
     LandmarkMap map(params);
     std::mt19937 rng(99);
     const std::vector<FlightTruth> flights = buildingFlights();

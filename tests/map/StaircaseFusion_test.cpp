@@ -14,7 +14,7 @@ WeightedStaircase weighted(const Staircase& s) {
     return {c, std::vector<int>(c.steps.size(), 1)};
 }
 
-TEST(StaircaseFusion, WrongOffsetStillLeavesOneEdgePerStep) {
+TEST(StaircaseFusion, OverlappingViewsPairStepsByLevelEvenWithXyDrift) {
     test::FlightTruth truth;
     std::mt19937 rng(41);
     test::ViewSpec va;
@@ -22,15 +22,32 @@ TEST(StaircaseFusion, WrongOffsetStillLeavesOneEdgePerStep) {
     test::ViewSpec vb;
     vb.first = 3;
     vb.last = 6;
+    vb.drift = {0.15, 0.0, 0.0};  // beyond the Definition-2 distance: no pair matches
     const WeightedStaircase a = weighted(test::makeDetection(truth, va, rng));
     const WeightedStaircase b = weighted(test::makeDetection(truth, vb, rng));
-    // The right offset is 3; 5 would append b's first two steps again on top of a.
-    const WeightedStaircase fused = fuseStaircases(a, b, 5, LandmarkParams{});
+    const WeightedStaircase fused = fuseStaircases(a, b, LandmarkParams{});
     ASSERT_EQ(fused.stairs.steps.size(), 7u);
     for (int i = 0; i < 7; ++i) {
         EXPECT_NEAR(fused.stairs.steps[i].centre().z(), truth.edgeCentre(i).z(), 1e-9);
     }
     EXPECT_EQ(fused.step_observations, (std::vector<int>{1, 1, 1, 2, 2, 1, 1}));
+}
+
+TEST(StaircaseFusion, GapBetweenPartialViewsIsKeptAndGeometryStaysRight) {
+    test::FlightTruth truth;
+    truth.num_steps = 16;
+    std::mt19937 rng(42);
+    test::ViewSpec bottom;
+    bottom.last = 3;
+    test::ViewSpec top;
+    top.first = 11;
+    const WeightedStaircase fused = fuseStaircases(
+        weighted(test::makeDetection(truth, bottom, rng)),
+        weighted(test::makeDetection(truth, top, rng)), LandmarkParams{});
+    ASSERT_EQ(fused.stairs.steps.size(), 9u);  // 4 + 5 seen, 7 never seen stay absent
+    EXPECT_NEAR(fused.stairs.step_height, truth.rise, 1e-9);
+    EXPECT_NEAR(fused.stairs.step_depth, truth.run, 1e-9);
+    EXPECT_NEAR(fused.stairs.steps.back().centre().z(), truth.topZ(), 1e-9);
 }
 
 TEST(EdgeFusion, WeightsByCovarianceAndKeepsTheWorldConvention) {
