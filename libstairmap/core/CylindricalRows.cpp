@@ -5,6 +5,28 @@
 
 namespace stairmap {
 
+namespace {
+
+/// One candidate entry of a row: azimuth bin, range and cell index.
+struct Entry {
+    int row, az;
+    float range;
+    int cell;
+};
+
+/// Counting sort of the entries by row (stable), O(n + rows).
+void bucketByRow(const std::vector<Entry>& in, int nrows, std::vector<Entry>& out,
+                 std::vector<int>& row_start) {
+    row_start.assign(nrows + 1, 0);
+    for (const Entry& e : in) ++row_start[e.row + 1];
+    for (int r = 0; r < nrows; ++r) row_start[r + 1] += row_start[r];
+    std::vector<int> fill(row_start.begin(), row_start.end() - 1);
+    out.resize(in.size());
+    for (const Entry& e : in) out[fill[e.row]++] = e;
+}
+
+}  // namespace
+
 void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
                           const CylindricalParams& p, CylindricalRows& rows) {
     rows.x.clear();
@@ -14,10 +36,14 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
     rows.row_begin.clear();
     rows.azimuth_bins = p.azimuth_bins;
     const int nrows = static_cast<int>(std::ceil((p.z_hi - p.z_lo) / p.row_height_m));
-    const double az_scale = p.azimuth_bins / (2 * M_PI);
-    // key = (row * bins + azimuth) << 32 | range in 0.1 mm, index kept alongside.
-    std::vector<std::pair<std::uint64_t, int>> keyed;
-    keyed.reserve(cells.size() / 4 + 16);
+    const float az_scale = static_cast<float>(p.azimuth_bins / (2 * M_PI));
+    // Per-thread scratch, re-used between calls (no page faults on fresh memory).
+    thread_local std::vector<Entry> tl_entries, tl_sorted;
+    thread_local std::vector<int> tl_row_start;
+    std::vector<Entry>& entries = tl_entries;
+    std::vector<Entry>& sorted = tl_sorted;
+    std::vector<int>& row_start = tl_row_start;
+    entries.clear();
     for (int i = 0; i < static_cast<int>(cells.size()); ++i) {
         const TopViewCell& c = cells[i];
         if (!(c.flags & flag)) continue;
@@ -26,32 +52,36 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
         const double fr = (c.z - p.z_lo) / p.row_height_m;
         const int row = static_cast<int>(std::floor(fr));
         const int other = (fr - row < 0.5) ? row - 1 : row + 1;
-        int az = static_cast<int>((std::atan2(c.y, c.x) + M_PI) * az_scale);
+        int az = static_cast<int>((std::atan2(c.y, c.x) + static_cast<float>(M_PI)) * az_scale);
         az = std::clamp(az, 0, p.azimuth_bins - 1);
-        const double range = std::sqrt(double(c.x) * c.x + double(c.y) * c.y);
-        const auto range_q = static_cast<std::uint64_t>(std::min(range * 1e4, 4.0e9));
+        const float range = std::sqrt(c.x * c.x + c.y * c.y);
         for (int r : {row, other}) {
-            if (r < 0 || r >= nrows) continue;
-            const std::uint64_t cell_key = static_cast<std::uint64_t>(r) * p.azimuth_bins + az;
-            keyed.emplace_back((cell_key << 32) | range_q, i);
+            if (r >= 0 && r < nrows) entries.push_back({r, az, range, i});
         }
     }
-    std::sort(keyed.begin(), keyed.end());
-    std::uint64_t last_cell = ~std::uint64_t(0);
-    int last_row = -1;
-    for (const auto& [key, idx] : keyed) {
-        const std::uint64_t cell_key = key >> 32;
-        if (cell_key == last_cell) continue;  // a nearer point already holds this cell
-        last_cell = cell_key;
-        const int row = static_cast<int>(cell_key / p.azimuth_bins);
-        if (row != last_row) {
-            rows.row_begin.push_back(static_cast<int>(rows.x.size()));
-            last_row = row;
+    bucketByRow(entries, nrows, sorted, row_start);
+    // Per row: nearest entry per azimuth bin in a flat array; only the touched bins are read back
+    // (sorted), so a sparse row costs its own size, not azimuth_bins.
+    std::vector<int> nearest(p.azimuth_bins, -1);
+    std::vector<int> touched;
+    for (int r = 0; r < nrows; ++r) {
+        if (row_start[r] == row_start[r + 1]) continue;
+        touched.clear();
+        for (int k = row_start[r]; k < row_start[r + 1]; ++k) {
+            int& slot = nearest[sorted[k].az];
+            if (slot < 0) touched.push_back(sorted[k].az);
+            if (slot < 0 || sorted[k].range < sorted[slot].range) slot = k;
         }
-        rows.x.push_back(cells[idx].x);
-        rows.y.push_back(cells[idx].y);
-        rows.z.push_back(cells[idx].z);
-        rows.azimuth.push_back(static_cast<int>(cell_key % p.azimuth_bins));
+        std::sort(touched.begin(), touched.end());
+        rows.row_begin.push_back(static_cast<int>(rows.x.size()));
+        for (int az : touched) {
+            const TopViewCell& c = cells[sorted[nearest[az]].cell];
+            rows.x.push_back(c.x);
+            rows.y.push_back(c.y);
+            rows.z.push_back(c.z);
+            rows.azimuth.push_back(az);
+            nearest[az] = -1;
+        }
     }
     rows.row_begin.push_back(static_cast<int>(rows.x.size()));
 }

@@ -26,7 +26,8 @@ struct CylindricalRows {
     int azimuth_bins = 0;
 };
 
-/// Fills `rows` from the cells having `flag`. Cost O(m log m) for m selected cells.
+/// Fills `rows` from the cells having `flag`. Cost O(m log m) worst case, O(m) typically, for m selected cells
+/// (counting sort by row, flat nearest-per-bin array per row).
 void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
                           const CylindricalParams& params, CylindricalRows& rows);
 

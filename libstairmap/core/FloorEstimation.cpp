@@ -1,5 +1,6 @@
 #include "core/FloorEstimation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -12,7 +13,10 @@ std::optional<double> dominantLevel(const PointCloud& cloud, const FloorSearch& 
     const float r2 = static_cast<float>(s.radius_m * s.radius_m);
     const float lo = static_cast<float>(s.z_lo), hi = static_cast<float>(s.z_hi);
     const float inv_bin = static_cast<float>(1.0 / s.bin_m);
-    for (const auto& p : cloud) {
+    // A level is found from a few tens of thousands of points: large clouds are subsampled.
+    const std::size_t stride = std::max<std::size_t>(1, cloud.size() / 30000);
+    for (std::size_t i = 0; i < cloud.size(); i += stride) {
+        const auto& p = cloud[i];
         // Comparisons are false for NaN, so non-finite points drop out here.
         if (!(p.z() >= lo && p.z() <= hi)) continue;
         if (!(p.x() * p.x() + p.y() * p.y() <= r2)) continue;
@@ -30,7 +34,8 @@ std::optional<double> dominantLevel(const PointCloud& cloud, const FloorSearch& 
     const double centre = s.z_lo + (best + 0.5) * s.bin_m;
     double sum = 0.0;
     int count = 0;
-    for (const auto& p : cloud) {
+    for (std::size_t i = 0; i < cloud.size(); i += stride) {
+        const auto& p = cloud[i];
         if (!(std::abs(p.z() - centre) <= 1.5 * s.bin_m)) continue;
         if (!(p.x() * p.x() + p.y() * p.y() <= r2)) continue;
         sum += p.z();

@@ -50,7 +50,8 @@ std::vector<LineSegment> extractLines(const std::vector<TopViewCell>& cells, std
     cp.z_hi = floor_z + p.max_height_above_floor_m;
     cp.row_height_m = p.row_height_m;
     cp.azimuth_bins = p.azimuth_bins;
-    CylindricalRows rows;
+    thread_local CylindricalRows tl_rows;  // scratch re-used between calls
+    CylindricalRows& rows = tl_rows;
     buildCylindricalRows(cells, flag, cp, rows);
     std::vector<LineSegment> lines;
     segmentRows(rows, segmentationParams(p), lines);
@@ -146,7 +147,8 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
     tp.edge_min_dz_m = params_.edge_min_dz_m;
     tp.edge_spill_dz_m = params_.edge_spill_dz_m;
     tp.edge_spill_max_dz_m = params_.min_step_height_m;
-    std::vector<TopViewCell> cells;
+    thread_local std::vector<TopViewCell> tl_cells;  // scratch re-used between calls
+    std::vector<TopViewCell>& cells = tl_cells;
     buildTopView(cloud_robot, tp, cells);
 
     if (params_.detect_ascending)

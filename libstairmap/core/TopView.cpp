@@ -71,8 +71,8 @@ bool radialOffsets(float x, float y, int nx, int (&offsets)[kPad]) {
     if (r < 1e-6f) return false;
     const float ux = x / r, uy = y / r;
     for (int k = 0; k < kPad; ++k) {
-        offsets[k] = static_cast<int>(std::lround((k + 1) * uy)) * nx +
-                     static_cast<int>(std::lround((k + 1) * ux));
+        offsets[k] = static_cast<int>(std::floor((k + 1) * uy + 0.5f)) * nx +
+                     static_cast<int>(std::floor((k + 1) * ux + 0.5f));
     }
     return true;
 }
