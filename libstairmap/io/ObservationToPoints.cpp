@@ -21,19 +21,19 @@ using mrpt::obs::CObservationVelodyneScan;
 static_assert(sizeof(CObservationVelodyneScan::TVelodyneRawPacket) == kVelodynePacketSize,
               "MRPT's packet struct must be the raw 1206-byte UDP payload");
 
-// Appends T * p for each finite p; counts the non-finite ones.
+// Appends T * p where finite (a corrupt sensor pose makes every point non-finite); counts the rest.
 template <typename GetPoint>
 void appendTransformed(std::size_t n, GetPoint get, const Eigen::Isometry3d& T,
                        ObservationPoints& out) {
     const Eigen::Isometry3f Tf = T.cast<float>();
     out.points_robot.reserve(out.points_robot.size() + n);
     for (std::size_t i = 0; i < n; ++i) {
-        const Eigen::Vector3f p = get(i);
+        const Eigen::Vector3f p = Tf * get(i);  // non-finite input or pose -> non-finite p
         if (!p.allFinite()) {
             ++out.dropped_non_finite;
             continue;
         }
-        out.points_robot.push_back(Tf * p);
+        out.points_robot.push_back(p);
     }
 }
 

@@ -16,6 +16,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "io/GuardedReadObject.h"
 #include "io/PoseConversion.h"
 #include "io/RobotPoseMatcher.h"
 
@@ -122,6 +123,10 @@ void RawlogScanSource::handleActions(const mrpt::obs::CActionCollection& actions
     }
     const auto& increment = increment_3d ? increment_3d : increment_2d;
     if (!increment) return;
+    if (!toIsometry(*increment).matrix().allFinite()) {
+        countUnsupported("non-finite odometry", "a non-finite odometry increment was ignored");
+        return;
+    }
     impl_->T_world_odom = impl_->T_world_odom * toIsometry(*increment);
     impl_->have_odometry = true;
     ++stats_.odometry_read;
@@ -171,7 +176,13 @@ void RawlogScanSource::handleObservation(const mrpt::obs::CObservation& obs) {
     impl_->matcher.observeStreamTime(stamp);
     if (const auto* rp = dynamic_cast<const mrpt::obs::CObservationRobotPose*>(&obs)) {
         ++stats_.robot_poses_read;
-        impl_->matcher.addPose(stamp, toIsometry(rp->pose.mean));
+        const Eigen::Isometry3d T_world_robot = toIsometry(rp->pose.mean);
+        if (T_world_robot.matrix().allFinite()) {
+            impl_->matcher.addPose(stamp, T_world_robot);
+        } else {
+            countUnsupported("non-finite CObservationRobotPose",
+                             "a CObservationRobotPose with non-finite values was ignored");
+        }
         return;
     }
     if (!isConvertible3DObservation(obs)) {
@@ -207,7 +218,7 @@ void RawlogScanSource::readOneObject() {
     const uint64_t start = impl_->file.getPosition();
     mrpt::serialization::CSerializable::Ptr object;
     try {
-        object = impl_->archive->ReadObject();
+        object = guardedReadObject(*impl_->archive, impl_->params.max_object_bytes);
     } catch (const std::exception& e) {
         if (impl_->file.getPosition() == start) {  // nothing of a new object: clean end
             impl_->eof = true;

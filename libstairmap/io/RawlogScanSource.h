@@ -20,6 +20,7 @@
 // once per type through the warning handler / messages(). The source never prints.
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -41,6 +42,10 @@ struct RawlogSourceParams {
     double pose_tolerance_s = 0.05;  ///< [s] max |t_pose - t_scan| for CObservationRobotPose
     double tum_tolerance_s = 0.05;   ///< [s] allowed extrapolation beyond the TUM time span
     ObservationConversionParams conversion;  ///< Velodyne range limits etc.
+    /// [bytes] address space one object may take while it is deserialized (Linux RLIMIT_AS,
+    /// see GuardedReadObject.h): a corrupt size field then fails as "corrupt" instead of the
+    /// process being killed. 0 disables the cap.
+    std::uint64_t max_object_bytes = std::uint64_t(4) << 30;
 };
 
 struct RawlogSourceStats {

@@ -152,3 +152,30 @@ TEST(RawlogCorruption, EmptyFileHasNoScans) {
     EXPECT_FALSE(src.next().has_value());
     EXPECT_EQ(src.stats().objects_read, 0u);
 }
+
+TEST(RawlogCorruption, OverwrittenBytesNeverCrash) {
+    const std::string dir = scratchDir();
+    const auto sizes = writeTenScans(dir + "/full.rawlog");
+    std::ifstream in(dir + "/full.rawlog", std::ios::binary);
+    const std::vector<char> original((std::istreambuf_iterator<char>(in)), {});
+    std::mt19937 rng(2024);
+    for (int trial = 0; trial < 40; ++trial) {
+        std::vector<char> bytes = original;
+        const std::size_t at = rng() % bytes.size();
+        const std::size_t len = 1 + rng() % 16;
+        for (std::size_t k = at; k < std::min(bytes.size(), at + len); ++k) bytes[k] = char(rng());
+        const std::string path = dir + "/damaged.rawlog";
+        std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+        RawlogScanSource src(path);
+        std::size_t scans = 0;
+        try {
+            while (auto s = src.next()) {
+                ++scans;
+                for (const auto& p : s->points_robot) ASSERT_TRUE(p.allFinite());
+            }
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+        }
+        EXPECT_LE(scans, 10u) << "trial " << trial;
+    }
+}

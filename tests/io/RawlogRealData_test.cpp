@@ -107,8 +107,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{"sample_velodyne_vlp16_gps.rawlog", 3},
                       Case{"sample_velodyne_hdl32.rawlog", 2}, Case{"test_velodyne_VLP16.rawlog", 1},
                       Case{"test-3d-obs-ground.rawlog", 1}),
-    [](const auto& info) {
-        std::string n = info.param.file;
+    [](const auto& param_info) {
+        std::string n = param_info.param.file;
         n = n.substr(0, n.find('.'));
         for (char& ch : n) {
             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
