@@ -18,10 +18,14 @@ namespace stairmap::io {
 
 namespace {
 
-/// First line of an MRPT exception text (those span many lines with a call trace).
-std::string firstLine(const std::string& text) {
-    const std::size_t end = text.find('\n');
-    return text.substr(0, std::min<std::size_t>(end, 200));
+/// The innermost "Message:" of an MRPT exception text (those nest and carry call traces), else
+/// the first line; at most 200 characters.
+std::string shortMessage(const std::string& text) {
+    const std::size_t tag = text.rfind("Message:");
+    std::size_t begin = tag == std::string::npos ? 0 : tag + 8;
+    while (begin < text.size() && text[begin] == ' ') ++begin;
+    const std::size_t end = text.find('\n', begin);
+    return text.substr(begin, std::min<std::size_t>(end == std::string::npos ? text.size() - begin : end - begin, 200));
 }
 
 /// Converts `obs` if it is a 3D observation; std::nullopt otherwise.
@@ -68,7 +72,7 @@ PointCloud readRawlogCloud(const std::string& path) {
         }
     } catch (const std::exception& e) {
         throw std::runtime_error(path + ": not a valid MRPT rawlog, or corrupt/truncated at object " +
-                                 std::to_string(num_objects + 1) + " (" + firstLine(e.what()) + ")");
+                                 std::to_string(num_objects + 1) + " (" + shortMessage(e.what()) + ")");
     }
     throw std::runtime_error(path + ": no 3D observation (CObservationPointCloud, CObservationVelodyneScan or "
                                     "CObservation3DRangeScan) among its " + std::to_string(num_objects) + " objects");
