@@ -1,0 +1,108 @@
+// `stairmap sim` and `stairmap eval` end to end through the CLI.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "CliRunner.h"
+#include "io/CloudFile.h"
+#include "io/GroundTruthJson.h"
+#include "io/StaircaseJson.h"
+
+namespace stairmap::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kTinyScene =
+    "[scene]\nname = tiny\ntype = ascending\nseed = 3\n"
+    "[stair]\nnum_risers = 4\nrise_m = 0.18\nrun_m = 0.3\nwidth_m = 1.0\n"
+    "[sensor]\nmodel = vlp16\nhorizontal_resolution_deg = 2.0\nmax_range_m = 10\n"
+    "[trajectory]\nwaypoints = -4 0 0; -1 0 0\nspeed_mps = 1.0\nscan_rate_hz = 1.0\n"
+    "[clouds]\nposes = -2 0 0 0\nscans_per_cloud = 1\n";
+
+TEST(SimEvalCli, SimWritesRawlogTrajectoriesCloudAndTruth) {
+    const auto dir = cliScratchDir("sim_cli", "tiny");
+    std::ofstream(dir + "/tiny.ini") << kTinyScene;
+    const auto r = runStairmap("sim '" + dir + "/tiny.ini' --out '" + dir + "/out' -q", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* f : {"tiny.rawlog", "poses.tum", "gt_trajectory.tum", "gt.json", "tiny_0.pcd",
+                          "tiny_0.gt.json"}) {
+        EXPECT_TRUE(fs::exists(dir + "/out/" + f)) << f;
+    }
+    const auto cloud = io::readCloudFile(dir + "/out/tiny_0.pcd");
+    EXPECT_GT(cloud.size(), 500u);
+    const auto truth = io::readGroundTruthFile(dir + "/out/tiny_0.gt.json");
+    ASSERT_EQ(truth.staircases.size(), 1u);
+    EXPECT_EQ(truth.frame, "robot");
+    // Robot 2 m before the foot, facing it: first nosing 2 m ahead at rise - base height.
+    EXPECT_NEAR(truth.staircases[0].nosings[0].centre().x(), 2.0, 1e-9);
+    EXPECT_NEAR(truth.staircases[0].nosings[0].centre().z(), 0.18 - 0.35, 1e-9);
+    // 3 m at 1 m/s and 1 Hz: 4 scans, one pose line each.
+    std::ifstream poses(dir + "/out/poses.tum");
+    int lines = 0;
+    for (std::string line; std::getline(poses, line);) lines += !line.empty() && line[0] != '#';
+    EXPECT_EQ(lines, 4);
+}
+
+TEST(SimEvalCli, SimBadSceneExitsTwoNamingFileAndKey) {
+    const auto dir = cliScratchDir("sim_cli", "bad");
+    std::ofstream(dir + "/bad.ini") << "[scene]\ntype = ascending\n[stair]\nwidth_m = wide\n[clouds]\nposes = 0 0 0 0\n";
+    const auto r = runStairmap("sim '" + dir + "/bad.ini' --out '" + dir + "/out'", dir);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("bad.ini"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("width_m"), std::string::npos) << r.err;
+}
+
+TEST(SimEvalCli, EvalScoresADetectOutputAgainstItsTruth) {
+    const auto dir = cliScratchDir("eval_cli", "one");
+    SceneTruth truth;
+    truth.frame = "robot";
+    truth.observer_floor_z = -0.4;
+    StaircaseTruth s;
+    s.name = "flight";
+    s.rise_m = 0.2;
+    s.run_m = 0.3;
+    s.width_m = 1.0;
+    s.num_risers = 3;
+    s.seen_as = StairDirection::Ascending;
+    Staircase d;
+    for (int i = 1; i <= 3; ++i) {
+        const double x = 2.0 + 0.3 * (i - 1), z = -0.4 + 0.2 * i;
+        s.nosings.push_back({{x, -0.5, z}, {x, 0.5, z}});
+        StairEdge e;
+        e.start = {x, -0.4, z};
+        e.end = {x, 0.4, z};
+        d.steps.push_back(e);
+    }
+    truth.staircases = {s};
+    io::writeGroundTruthFile(dir + "/cloud_7.gt.json", truth, {{"kind", "ascending"}});
+    d.step_height = 0.22;  // 2 cm
+    d.step_depth = 0.31;   // 1 cm
+    d.step_width = 0.8;    // 20 cm
+    d.location = d.steps.front().centre();
+    const nlohmann::json det = {{"staircases", {io::toJson(d)}}, {"time_ms", 12.5}};
+    std::ofstream(dir + "/cloud_7.json") << det.dump();
+    const auto r = runStairmap("eval '" + dir + "/cloud_7.json' --json", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const auto& total = j.at("total");
+    EXPECT_EQ(total.at("samples").get<int>(), 1);
+    EXPECT_EQ(total.at("detections").get<int>(), 1);
+    EXPECT_EQ(total.at("false_positives").get<int>(), 0);
+    EXPECT_NEAR(total.at("mae_height_cm").get<double>(), 2.0, 1e-6);
+    EXPECT_NEAR(total.at("mae_depth_cm").get<double>(), 1.0, 1e-6);
+    EXPECT_NEAR(total.at("mae_width_cm").get<double>(), 20.0, 1e-6);
+    EXPECT_NEAR(total.at("mae_location_cm").get<double>(), 0.0, 1e-6);
+    EXPECT_NEAR(total.at("mean_time_ms").get<double>(), 12.5, 1e-9);
+    // Without a truth file the command fails cleanly.
+    std::ofstream(dir + "/orphan.json") << det.dump();
+    const auto bad = runStairmap("eval '" + dir + "/orphan.json'", dir);
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("orphan"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace stairmap::test
