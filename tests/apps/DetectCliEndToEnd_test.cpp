@@ -111,7 +111,12 @@ TEST_P(DetectCliEndToEnd, ReportsTheKnownStaircase) {
     }
     const CliResult r = runStairmap(args, dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const json out = json::parse(r.out);
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    ASSERT_FALSE(r.out.empty());
+    EXPECT_EQ(r.out.find('\n'), r.out.size() - 1) << "stdout must be exactly one line";
+    const json out = json::parse(r.out);  // throws on anything but one JSON value
+    ASSERT_TRUE(out.at("time_ms").is_number());
+    EXPECT_GT(out.at("time_ms").get<double>(), 0.0);
     SCOPED_TRACE(out.dump(1));
     ASSERT_EQ(out.at("staircases").size(), 1u) << "exactly the one staircase, no false positive";
     const json& s = out.at("staircases")[0];
