@@ -135,7 +135,7 @@ TEST(RawlogScanSource, OdometryPrefers3DAndFallsBackTo2D) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PlainAndGz, RawlogCompression, ::testing::Values(false, true),
-                         [](const auto& info) { return info.param ? "gz" : "plain"; });
+                         [](const auto& param_info) { return param_info.param ? "gz" : "plain"; });
 
 TEST(RawlogScanSource, RobotPoseAfterScanAndNearestInTime) {
     const std::string path = scratchDir() + "/after.rawlog";
