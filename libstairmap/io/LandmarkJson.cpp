@@ -31,6 +31,8 @@ json landmarkToJson(const StaircaseLandmark& lm) {
             {"observations", lm.observations},
             {"first_seen_s", lm.first_seen_s},
             {"last_seen_s", lm.last_seen_s},
+            {"bottom_observed", lm.bottom_observed},
+            {"top_observed", lm.top_observed},
             {"bottom_floor", lm.bottom_floor},
             {"top_floor", lm.top_floor},
             {"direction", "ascending"},
@@ -98,6 +100,8 @@ StaircaseLandmark landmarkFromJson(const json& j, const std::string& path) {
     lm.observations = intField(j, "observations", path);
     lm.first_seen_s = numberField(j, "first_seen_s", path);
     lm.last_seen_s = numberField(j, "last_seen_s", path);
+    lm.bottom_observed = jf::boolean(jf::member(j, "bottom_observed", path), path + ".bottom_observed");
+    lm.top_observed = jf::boolean(jf::member(j, "top_observed", path), path + ".top_observed");
     lm.bottom_floor = intField(j, "bottom_floor", path);
     lm.top_floor = intField(j, "top_floor", path);
     if (jf::text(jf::member(j, "direction", path), path + ".direction") != "ascending")

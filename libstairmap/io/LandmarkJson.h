@@ -5,7 +5,7 @@
 //   {"version":1, "frame":"world", "generator":"stairmap",
 //    "floors":[{"id":i, "z":m, "robot_samples":n, "staircase_ends":n}],          (reported floors)
 //    "staircases":[{"id":i, "confirmed":bool, "observations":n, "first_seen_s":s,
-//       "last_seen_s":s, "bottom_floor":i, "top_floor":i, "direction":"ascending", "num_steps":k,
+//       "last_seen_s":s, "bottom_observed":bool, "top_observed":bool, "bottom_floor":i, "top_floor":i, "direction":"ascending", "num_steps":k,
 //       "step_height":m, "step_depth":m, "step_width":m, "slope_deg":deg, "location":[x,y,z],
 //       "heading_deg":deg, "steps":[{"start":[x,y,z], "end":[x,y,z], "num_points":n,
 //       "observations":n, "cov_rho_theta":[[c00,c01],[c10,c11]]}, ...]}],

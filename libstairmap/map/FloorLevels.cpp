@@ -111,8 +111,8 @@ void refreshFloorLevels(LandmarkMapState& state, const LandmarkParams& params) {
     }
     for (const StaircaseLandmark& lm : state.staircases) {
         if (!lm.confirmed || lm.stairs.steps.empty()) continue;
-        addStaircaseEnd(state, staircaseBottomZ(lm.stairs), params);
-        addStaircaseEnd(state, staircaseTopZ(lm.stairs), params);
+        if (lm.bottom_observed) addStaircaseEnd(state, staircaseBottomZ(lm.stairs), params);
+        if (lm.top_observed) addStaircaseEnd(state, staircaseTopZ(lm.stairs), params);
     }
     auto& levels = state.floor_levels;
     levels.erase(std::remove_if(levels.begin(), levels.end(),

@@ -1,7 +1,7 @@
 #pragma once
 // Floor levels: height clusters of where the robot drove and of staircase ends (issue 4, item 4).
 // A floor is reported once enough robot samples fell on it (samples taken while climbing stay
-// below the threshold) or a confirmed staircase starts or ends on it.
+// below the threshold) or a confirmed staircase's observed bottom or top lies on it.
 
 #include <vector>
 
@@ -20,7 +20,8 @@ bool isReportedFloor(const Floor& floor, const LandmarkParams& params);
 /// Adds one robot floor height to the nearest level within tolerance, or starts a new level.
 void addRobotFloorSample(LandmarkMapState& state, double z, const LandmarkParams& params);
 
-/// Recomputes every level's staircase ends from the confirmed landmarks (creating levels for ends
+/// Recomputes every level's staircase ends from the confirmed landmarks' observed ends (creating
+/// levels for ends
 /// that fall on none and dropping levels left without support), merges levels closer than the
 /// tolerance (keeping the lower id), and sets each landmark's bottom_floor/top_floor to the nearest
 /// reported level within tolerance (-1 if none).

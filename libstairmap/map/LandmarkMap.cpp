@@ -98,6 +98,8 @@ LandmarkUpdate LandmarkMap::addDetection(const Staircase& detection_world, doubl
     }
     StaircaseLandmark& lm = state_.staircases[index];
     lm.observations += 1;
+    if (detection_world.direction == StairDirection::Ascending) lm.bottom_observed = true;
+    if (detection_world.direction == StairDirection::Descending) lm.top_observed = true;
     lm.first_seen_s = std::min(lm.first_seen_s, stamp_s);
     lm.last_seen_s = std::max(lm.last_seen_s, stamp_s);
     joinOverlappingLandmarks(index, update);
@@ -136,6 +138,8 @@ int LandmarkMap::joinInto(int keep_index, int absorb_index) {
     keep.stairs = std::move(fused.stairs);
     keep.step_observations = std::move(fused.step_observations);
     keep.observations += absorbed.observations;
+    keep.bottom_observed = keep.bottom_observed || absorbed.bottom_observed;
+    keep.top_observed = keep.top_observed || absorbed.top_observed;
     keep.first_seen_s = std::min(keep.first_seen_s, absorbed.first_seen_s);
     keep.last_seen_s = std::max(keep.last_seen_s, absorbed.last_seen_s);
     for (auto& [gone, into] : state_.absorbed) {

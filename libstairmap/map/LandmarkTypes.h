@@ -21,6 +21,11 @@ struct StaircaseLandmark {
     int observations = 0;             ///< detections fused into this landmark
     double first_seen_s = 0.0;        ///< [s] stamp of the first detection
     double last_seen_s = 0.0;         ///< [s] stamp of the latest detection
+    /// The flight's ends were actually seen: an ascending detection starts at the lowest nosing,
+    /// a descending one at the top nosing (flush with the upper floor). Only observed ends may
+    /// create floor levels, so a partially seen flight does not invent a floor at its last step.
+    bool bottom_observed = false;
+    bool top_observed = false;
     int bottom_floor = -1;            ///< id of the floor the flight leaves from, -1 if unknown
     int top_floor = -1;               ///< id of the floor the flight reaches, -1 if unknown
 };

@@ -71,6 +71,32 @@ TEST(FloorLevels, ConfirmedStaircaseEndCreatesTheFloorTheRobotNeverDroveOn) {
     EXPECT_EQ(map.staircases()[0].top_floor, top->id);
 }
 
+TEST(FloorLevels, UnobservedTopOfAPartlySeenFlightCreatesNoFloor) {
+    // Only seen from the bottom, and only its lower half: its last edge is not a floor.
+    const test::FlightTruth flight = twoFloorFlight();
+    LandmarkMap map;
+    std::mt19937 rng(24);
+    for (int i = 0; i < 20; ++i) map.addRobotFloor(0.0, i);
+    for (int k = 0; k < 4; ++k) {
+        test::ViewSpec v;
+        v.last = 8;
+        map.addDetection(test::makeDetection(flight, v, rng), k);
+    }
+    ASSERT_TRUE(map.staircases()[0].confirmed);
+    EXPECT_TRUE(map.staircases()[0].bottom_observed);
+    EXPECT_FALSE(map.staircases()[0].top_observed);
+    ASSERT_EQ(map.floors().size(), 1u);
+    EXPECT_EQ(map.staircases()[0].bottom_floor, map.floors()[0].id);
+    EXPECT_EQ(map.staircases()[0].top_floor, -1);
+    // Seen once from the top (the whole flight): the upper floor appears.
+    test::ViewSpec from_top;
+    from_top.descending = true;
+    map.addDetection(test::makeDetection(flight, from_top, rng), 5);
+    ASSERT_EQ(map.floors().size(), 2u);
+    EXPECT_NEAR(map.floors()[1].z, flight.topZ(), 0.01);
+    EXPECT_EQ(map.staircases()[0].top_floor, map.floors()[1].id);
+}
+
 TEST(FloorLevels, StackedFlightsFormAThreeFloorGraph) {
     test::FlightTruth lower = twoFloorFlight();
     test::FlightTruth upper = lower;

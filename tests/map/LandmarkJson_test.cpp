@@ -23,6 +23,8 @@ void expectSameState(const LandmarkMapState& a, const LandmarkMapState& b) {
         EXPECT_EQ(x.observations, y.observations);
         EXPECT_EQ(x.first_seen_s, y.first_seen_s);
         EXPECT_EQ(x.last_seen_s, y.last_seen_s);
+        EXPECT_EQ(x.bottom_observed, y.bottom_observed);
+        EXPECT_EQ(x.top_observed, y.top_observed);
         EXPECT_EQ(x.bottom_floor, y.bottom_floor);
         EXPECT_EQ(x.top_floor, y.top_floor);
         EXPECT_EQ(x.step_observations, y.step_observations);
