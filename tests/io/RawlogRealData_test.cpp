@@ -23,6 +23,7 @@ struct Case {
     const char* file;
     std::size_t scans;
 };
+void PrintTo(const Case& c, std::ostream* os) { *os << c.file; }  // readable test names
 
 // Points a scan must yield, counted straight from the raw data: Velodyne returns with range in
 // [max(1 m, minRange), maxRange]; depth pixels with a non-zero range.
