@@ -83,7 +83,12 @@ TEST(Mapper, VoxelMapAndCountersFollowTheScans) {
     EXPECT_EQ(mapper.stats().scans, 6u);
     EXPECT_EQ(mapper.stats().voxel_insertions, 2u);  // scans 0 and 3
     EXPECT_LE(mapper.stats().points_used, mapper.stats().points_in);
-    EXPECT_TRUE(mapper.voxelMap().isOccupied({1.0, 0.0, -0.01}));  // floor in front of the robot
+    // The floor (z = 0) ahead of the robot: its lowest ring hits it 1.31 m away, at x = 0.31.
+    EXPECT_TRUE(mapper.voxelMap().isOccupied({0.31, 0.0, 0.01}) ||
+                mapper.voxelMap().isOccupied({0.31, 0.0, -0.01}));
+    int floor_voxels = 0;
+    for (const auto& c : mapper.voxelMap().occupiedVoxelCentres()) floor_voxels += std::abs(c.z()) < 0.05;
+    EXPECT_GT(floor_voxels, 200);
     EXPECT_NEAR(mapper.stats().logDuration(), 0.5, 1e-9);
 }
 
