@@ -1,6 +1,7 @@
 // PLY reader: ascii and binary_little_endian; x y z of the `vertex` element (float, double or
 // integer), other vertex properties and other elements (faces, ...) are skipped.
 
+#include <algorithm>
 #include <cmath>
 #include <istream>
 #include <stdexcept>
@@ -109,6 +110,38 @@ bool readBinaryEntry(std::istream& in, const PlyElement& e, const std::size_t* x
     return true;
 }
 
+/// Fast path for vertices without list properties: fixed-size records read in chunks.
+PointCloud readFixedSizeVertices(std::istream& in, const PlyElement& vertex, const std::size_t xyz_index[3]) {
+    std::size_t record_bytes = 0, offsets[3] = {0, 0, 0};
+    for (std::size_t p = 0; p < vertex.properties.size(); ++p) {
+        for (int k = 0; k < 3; ++k) {
+            if (xyz_index[k] == p) offsets[k] = record_bytes;
+        }
+        record_bytes += vertex.properties[p].value.size;
+    }
+    detail::PointCollector points(vertex.count);
+    constexpr std::size_t kChunk = 4096;
+    std::vector<char> buffer;
+    for (std::size_t done = 0; done < vertex.count;) {
+        const std::size_t chunk = std::min(kChunk, vertex.count - done);
+        buffer.resize(chunk * record_bytes);
+        in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+        const std::size_t complete = static_cast<std::size_t>(in.gcount()) / record_bytes;
+        for (std::size_t i = 0; i < complete; ++i) {
+            const char* record = buffer.data() + i * record_bytes;
+            double xyz[3];
+            for (int k = 0; k < 3; ++k) {
+                const PlyScalar& type = vertex.properties[xyz_index[k]].value;
+                xyz[k] = detail::decodeLittleEndian(record + offsets[k], type.kind, type.size);
+            }
+            points.add(xyz[0], xyz[1], xyz[2]);
+        }
+        done += complete;
+        if (complete < chunk) truncated(vertex, done);
+    }
+    return points.finish();
+}
+
 PointCloud readPlyBinary(std::istream& in, const PlyHeader& h) {
     double unused[3];
     for (std::size_t e = 0; e < h.vertex_element; ++e) {
@@ -118,6 +151,9 @@ PointCloud readPlyBinary(std::istream& in, const PlyHeader& h) {
         }
     }
     const PlyElement& vertex = h.elements[h.vertex_element];
+    bool has_list = false;
+    for (const PlyProperty& p : vertex.properties) has_list = has_list || p.is_list;
+    if (!has_list) return readFixedSizeVertices(in, vertex, h.xyz_property);
     detail::PointCollector points(vertex.count);
     for (std::size_t i = 0; i < vertex.count; ++i) {
         double xyz[3] = {0, 0, 0};

@@ -170,6 +170,22 @@ TEST(CloudFile, BinaryPlyWithDoubleCoordsAndFaceElements) {
     EXPECT_EQ(readCloudFile(path), PointCloud({{1, 2, 3}, {-1, -2, -3}}));
 }
 
+TEST(CloudFile, BinaryPlyWithListPropertyInsideVertices) {
+    const std::string path = scratchDir("CloudFile", "ply_binary_vertex_list") + "/lists.ply";
+    std::string data =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty int x\n"
+        "property list ushort float neighbours\nproperty float y\nproperty short z\nend_header\n";
+    for (int i = 0; i < 3; ++i) {
+        data += bytesOf<int>(10 * i) + bytesOf<std::uint16_t>(static_cast<std::uint16_t>(i));
+        for (int k = 0; k < i; ++k) data += bytesOf<float>(99.0f);
+        data += bytesOf<float>(0.5f * i) + bytesOf<std::int16_t>(static_cast<std::int16_t>(-i));
+    }
+    writeRaw(path, data);
+    EXPECT_EQ(readCloudFile(path), PointCloud({{0, 0, 0}, {10, 0.5f, -1}, {20, 1, -2}}));
+    writeRaw(path, data.substr(0, data.size() - 3));
+    test::expectReadError([&] { readCloudFile(path); }, path + ": ", "file ends at entry 2");
+}
+
 TEST(CloudFile, WriterRejectsUnknownExtensionsAndUnwritablePaths) {
     const std::string dir = scratchDir("CloudFile", "write_errors");
     test::expectReadError([&] { writeCloudFile(dir + "/cloud.txt", {{1, 2, 3}}); }, dir + "/cloud.txt: ",
