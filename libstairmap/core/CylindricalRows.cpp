@@ -37,6 +37,7 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
     rows.azimuth_bins = p.azimuth_bins;
     const int nrows = static_cast<int>(std::ceil((p.z_hi - p.z_lo) / p.row_height_m));
     const float az_scale = static_cast<float>(p.azimuth_bins / (2 * M_PI));
+    const float inv_row = static_cast<float>(1.0 / p.row_height_m);
     // Per-thread scratch, re-used between calls (no page faults on fresh memory).
     thread_local std::vector<Entry> tl_entries, tl_sorted;
     thread_local std::vector<int> tl_row_start;
@@ -49,9 +50,10 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
         if (!(c.flags & flag)) continue;
         // Row r spans [r - 0.5, r + 1.5) row heights: overlapping windows, so that an edge whose
         // points straddle a row boundary (noise) lies whole in at least one row.
-        const double fr = (c.z - p.z_lo) / p.row_height_m;
-        const int row = static_cast<int>(std::floor(fr));
-        const int other = (fr - row < 0.5) ? row - 1 : row + 1;
+        const float fr = (c.z - static_cast<float>(p.z_lo)) * inv_row;
+        if (!(fr >= 0.f)) continue;
+        const int row = static_cast<int>(fr);  // truncation == floor for fr >= 0
+        const int other = (fr - row < 0.5f) ? row - 1 : row + 1;
         int az = static_cast<int>((std::atan2(c.y, c.x) + static_cast<float>(M_PI)) * az_scale);
         az = std::clamp(az, 0, p.azimuth_bins - 1);
         const float range = std::sqrt(c.x * c.x + c.y * c.y);
