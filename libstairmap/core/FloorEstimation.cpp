@@ -13,8 +13,8 @@ std::optional<double> dominantLevel(const PointCloud& cloud, const FloorSearch& 
     const float r2 = static_cast<float>(s.radius_m * s.radius_m);
     const float lo = static_cast<float>(s.z_lo), hi = static_cast<float>(s.z_hi);
     const float inv_bin = static_cast<float>(1.0 / s.bin_m);
-    // A level is found from a few tens of thousands of points: large clouds are subsampled.
-    const std::size_t stride = std::max<std::size_t>(1, cloud.size() / 30000);
+    // A level is found from ~10k points: large clouds are subsampled.
+    const std::size_t stride = std::max<std::size_t>(1, cloud.size() / 10000);
     for (std::size_t i = 0; i < cloud.size(); i += stride) {
         const auto& p = cloud[i];
         // Comparisons are false for NaN, so non-finite points drop out here.
