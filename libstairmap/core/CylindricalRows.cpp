@@ -38,6 +38,7 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
     const int nrows = static_cast<int>(std::ceil((p.z_hi - p.z_lo) / p.row_height_m));
     const float az_scale = static_cast<float>(p.azimuth_bins / (2 * M_PI));
     const float inv_row = static_cast<float>(1.0 / p.row_height_m);
+    const float skip_lo = static_cast<float>(p.skip_z_lo), skip_hi = static_cast<float>(p.skip_z_hi);
     // Per-thread scratch, re-used between calls (no page faults on fresh memory).
     thread_local std::vector<Entry> tl_entries, tl_sorted;
     thread_local std::vector<int> tl_row_start;
@@ -47,7 +48,7 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
     entries.clear();
     for (int i = 0; i < static_cast<int>(cells.size()); ++i) {
         const TopViewCell& c = cells[i];
-        if (!(c.flags & flag)) continue;
+        if (!(c.flags & flag) || (c.z > skip_lo && c.z < skip_hi)) continue;
         // Row r spans [r - 0.5, r + 1.5) row heights: overlapping windows, so that an edge whose
         // points straddle a row boundary (noise) lies whole in at least one row.
         const float fr = (c.z - static_cast<float>(p.z_lo)) * inv_row;

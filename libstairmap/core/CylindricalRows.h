@@ -16,6 +16,10 @@ struct CylindricalParams {
     double z_hi = 3.0;         ///< [m] top of the last row
     double row_height_m = 0.025;  ///< [m]
     int azimuth_bins = 1800;   ///< [-] over 360 deg
+    /// [m] cells with z inside (skip_z_lo, skip_z_hi) are left out: the ground band, whose lines
+    /// Algorithm 1 never uses (a sparse floor would flood the rows with candidates).
+    double skip_z_lo = 0.0;
+    double skip_z_hi = 0.0;
 };
 
 /// Rows of the array, each in azimuth order; points stored as structure of arrays.

@@ -50,6 +50,8 @@ std::vector<LineSegment> extractLines(const std::vector<TopViewCell>& cells, std
     cp.z_hi = floor_z + p.max_height_above_floor_m;
     cp.row_height_m = p.row_height_m;
     cp.azimuth_bins = p.azimuth_bins;
+    cp.skip_z_lo = floor_z - p.floor_tolerance_m;  // ground lines are not used by the search
+    cp.skip_z_hi = floor_z + p.floor_tolerance_m;
     thread_local CylindricalRows tl_rows;  // scratch re-used between calls
     CylindricalRows& rows = tl_rows;
     buildCylindricalRows(cells, flag, cp, rows);
