@@ -87,46 +87,58 @@ bool stairTouchesBand(const StaircaseLandmark& s, std::pair<double, double> band
     return z_hi >= band.first && z_lo <= band.second;
 }
 
+Bounds mapBounds(const PointCloud& voxels, const MapView& view) {
+    Bounds b;
+    for (const auto& v : voxels) b.add(v.cast<double>());
+    for (const auto& t : view.trajectory) b.add(t);
+    for (const auto& s : view.staircases) {
+        for (const auto& e : s.stairs.steps) {
+            b.add(e.start);
+            b.add(e.end);
+        }
+    }
+    if (!b.valid()) b.add(Eigen::Vector3d::Zero());
+    return b;
+}
+
+/// One panel: voxels within the height band (grey by height), trajectory (blue), staircases (red).
+void drawPanel(mrpt::img::CImage& img, const PanelProjection& p, std::pair<double, double> band,
+               bool side, const PointCloud& voxels, const MapView& view, const Bounds& b) {
+    img.rectangle(p.x0, p.y0, p.x0 + p.size - 1, p.y0 + p.size - 1, TColor(120, 120, 120));
+    auto vertical = [&](const auto& q) { return side ? p.py(q.z()) : p.py(q.y()); };
+    for (const auto& v : voxels) {
+        if (v.z() < band.first || v.z() > band.second) continue;
+        const int x = p.px(v.x()), y = vertical(v);
+        img.filledRectangle(x, y, x, y, heightColour(v.z(), b.lo.z(), b.hi.z()));
+    }
+    for (std::size_t k = 1; k < view.trajectory.size(); ++k) {
+        const auto& a = view.trajectory[k - 1];
+        const auto& c = view.trajectory[k];
+        if (!side && (a.z() < band.first || a.z() > band.second)) continue;
+        img.line(p.px(a.x()), vertical(a), p.px(c.x()), vertical(c), TColor(40, 90, 230), 1);
+    }
+    for (const auto& s : view.staircases) {
+        if (side || stairTouchesBand(s, band)) drawStaircase(img, p, s, side);
+    }
+}
+
 }  // namespace
 
 void saveMapOverview(const MapView& view, const std::string& path, const OverviewParams& params) {
     const PointCloud voxels = view.voxels ? view.voxels->occupiedVoxelCentres() : PointCloud{};
-    Bounds b;
-    for (const auto& v : voxels) b.add(v.cast<double>());
-    for (const auto& t : view.trajectory) b.add(t);
-    for (const auto& s : view.staircases)
-        for (const auto& e : s.stairs.steps) { b.add(e.start); b.add(e.end); }
-    if (!b.valid()) b.add(Eigen::Vector3d::Zero());
-
+    const Bounds b = mapBounds(voxels, view);
     const Panels panels = topViewBands(view, params);
     const int n = static_cast<int>(panels.z_bands.size()) + 1;
     const int size = params.panel_px;
     mrpt::img::CImage img(n * size, size + 20, mrpt::img::CH_RGB);
     img.filledRectangle(0, 0, n * size - 1, size + 19, TColor(255, 255, 255));
-
     for (int i = 0; i < n; ++i) {
         const bool side = i == n - 1;
         const PanelProjection p = side ? panel(i, size, b.lo.x(), b.hi.x(), b.lo.z(), b.hi.z())
                                        : panel(i, size, b.lo.x(), b.hi.x(), b.lo.y(), b.hi.y());
-        const auto band = side ? std::make_pair(-1e18, 1e18) : panels.z_bands[i];
         img.textOut(p.x0 + 6, 2, side ? "side view (x-z)" : panels.titles[i], TColor(0, 0, 0));
-        img.rectangle(p.x0, p.y0, p.x0 + size - 1, p.y0 + size - 1, TColor(120, 120, 120));
-        for (const auto& v : voxels) {
-            if (v.z() < band.first || v.z() > band.second) continue;
-            const TColor c = heightColour(v.z(), b.lo.z(), b.hi.z());
-            const int x = p.px(v.x()), y = side ? p.py(v.z()) : p.py(v.y());
-            img.filledRectangle(x, y, x, y, c);
-        }
-        for (std::size_t k = 1; k < view.trajectory.size(); ++k) {
-            const auto& a = view.trajectory[k - 1];
-            const auto& c = view.trajectory[k];
-            if (!side && (a.z() < band.first || a.z() > band.second)) continue;
-            img.line(p.px(a.x()), side ? p.py(a.z()) : p.py(a.y()), p.px(c.x()),
-                     side ? p.py(c.z()) : p.py(c.y()), TColor(40, 90, 230), 1);
-        }
-        for (const auto& s : view.staircases) {
-            if (side || stairTouchesBand(s, band)) drawStaircase(img, p, s, side);
-        }
+        drawPanel(img, p, side ? std::make_pair(-1e18, 1e18) : panels.z_bands[i], side, voxels,
+                  view, b);
     }
     if (!img.saveToFile(path)) throw std::runtime_error(path + ": writing the PNG failed");
 }
