@@ -149,6 +149,8 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
     tp.edge_min_dz_m = params_.edge_min_dz_m;
     tp.edge_spill_dz_m = params_.edge_spill_dz_m;
     tp.edge_spill_max_dz_m = params_.min_step_height_m;
+    tp.ground_z_lo = floor - params_.floor_tolerance_m;
+    tp.ground_z_hi = floor + params_.floor_tolerance_m;
     thread_local std::vector<TopViewCell> tl_cells;  // scratch re-used between calls
     std::vector<TopViewCell>& cells = tl_cells;
     buildTopView(cloud_robot, tp, cells);

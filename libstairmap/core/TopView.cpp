@@ -123,6 +123,8 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
     const float* grid_z = z_store.data();
     const float min_dz = static_cast<float>(p.edge_min_dz_m);
     const float leaf = 1.0f / box.inv_leaf;
+    const float ground_lo = static_cast<float>(p.ground_z_lo);
+    const float ground_hi = static_cast<float>(p.ground_z_hi);
     const float spill_dz = static_cast<float>(p.edge_spill_dz_m);
     const float spill_max = static_cast<float>(p.edge_spill_max_dz_m);
     for (int iy = 0; iy < box.ny; ++iy) {
@@ -138,7 +140,9 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
             std::uint8_t flags = kFrontDrop | kBackDrop;  // at the robot itself: both
             if (away) {
                 const float lo = z + spill_dz, hi = z + spill_max;
-                const Neighbourhood front = inspect(grid_z, col, offsets, -1, z_drop, hi);
+                const bool ground = z > ground_lo && z < ground_hi;
+                Neighbourhood front;  // not needed in the ground band: no drop, no spill
+                if (!ground) front = inspect(grid_z, col, offsets, -1, z_drop, hi);
                 const Neighbourhood back = inspect(grid_z, col, offsets, +1, z_drop, hi);
                 // A drop on one side with a slightly higher column on the other side is the top of
                 // a riser just below the real nosing (noise spill): not a nosing. A much higher

@@ -33,6 +33,10 @@ struct TopViewParams {
     /// just below the nosing (points spilled by noise) and is not a nosing
     double edge_spill_dz_m = 0.025;
     double edge_spill_max_dz_m = 0.11;  ///< [m] ...and lower than this (higher: a wall, a floor)
+    /// [m] ground band (floor +- tolerance): only the descending (back-drop) flag is computed there,
+    /// for the floor's own nosing; ascending nosings are never at floor level.
+    double ground_z_lo = 0.0;
+    double ground_z_hi = 0.0;
 };
 
 /// Builds the top view of `cloud` (robot frame, robot at the XY origin) and writes the columns that
