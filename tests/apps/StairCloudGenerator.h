@@ -41,17 +41,22 @@ public:
     PointCloud generate(StairCloudTruth& truth) {
         const double z0 = -s_.robot_height_m, w = s_.width_m, d = s_.distance_m, r = s_.run_m;
         const int n = s_.num_risers;
-        quad({-3, -3, z0}, {6, 0, 0}, {0, 6, 0}, 1.5, true);
+        // The robot's floor reaches exactly as far as the last tread/landing, so it does not end
+        // in mid-air beside the flight (an edge-like artefact no real scene has).
+        const double last_depth = s_.ascending ? 1.0 : 1.5;  // upper landing / lower floor
+        const double far = d + (n - 1) * r + last_depth;
+        quad({-3, -3, z0}, {far + 3, 0, 0}, {0, 6, 0}, 1.5, true);
         for (int k = 0; k < n; ++k) {
             const double x = d + k * r;  // nosing k, stair frame
+            const double depth = k + 1 < n ? r : last_depth;
             if (s_.ascending) {
                 const double z = z0 + (k + 1) * s_.rise_m;
                 quad({x, -w / 2, z - s_.rise_m}, {0, w, 0}, {0, 0, s_.rise_m}, 1.0, false);  // riser k
-                quad({x, -w / 2, z}, {k + 1 < n ? r : 1.0, 0, 0}, {0, w, 0}, 1.0, false);    // tread k
+                quad({x, -w / 2, z}, {depth, 0, 0}, {0, w, 0}, 1.0, false);                  // tread k
                 truth.nosing_centres.push_back(toRobot(x, 0, z));
             } else {
                 const double z = z0 - (k + 1) * s_.rise_m;  // tread below nosing k
-                quad({x, -w / 2, z}, {k + 1 < n ? r : 1.5, 0, 0}, {0, w, 0}, 1.0, false);
+                quad({x, -w / 2, z}, {depth, 0, 0}, {0, w, 0}, 1.0, false);
                 truth.nosing_centres.push_back(toRobot(x, 0, z0 - k * s_.rise_m));
             }
         }
