@@ -39,7 +39,8 @@ const char* kDetectHelp =
     "    travel up/down the flight, counter-clockwise from +x),\n"
     "    \"steps\":[{\"start\":[x,y,z],\"end\":[x,y,z],...},...] (from the robot's floor outward)}],\n"
     "   \"time_ms\":t (detector only, no file reading),\"floor_z\":m,\"floor_estimated\":bool,\n"
-    "   \"num_points\":n (finite points read)}\n"
+    "   \"num_points\":n (finite points read),\n"
+    "   \"input\":{\"cloud\":path,\"config\":path|null,\"robot_height_m\":H|null}}\n"
     "Exit status: 0 on success (also when nothing is found); 2 on bad input or options,\n"
     "with one line on stderr naming the file and the problem.";
 
@@ -92,6 +93,10 @@ int runDetect(const DetectOptions& options) {
 
     nlohmann::json out = io::detectionToJson(result, time_ms);
     out["num_points"] = cloud.size();
+    // What the result was made from (STYLE: outputs record their effective settings).
+    out["input"] = {{"cloud", options.cloud_path},
+                    {"config", options.config_path.empty() ? nlohmann::json() : nlohmann::json(options.config_path)},
+                    {"robot_height_m", floor_z ? nlohmann::json(-*floor_z) : nlohmann::json()}};
     std::cout << out.dump() << "\n" << std::flush;
     if (!std::cout) throw std::runtime_error("writing the result to stdout failed");
     return 0;

@@ -135,13 +135,19 @@ TEST(DetectCli, ConfigRobotHeightSetsTheFloorAndTheOptionOverridesIt) {
     const json a = json::parse(from_config.out);
     EXPECT_EQ(a.at("floor_estimated"), false);
     EXPECT_NEAR(a.at("floor_z").get<double>(), -0.6, 0.05);
+    EXPECT_EQ(a.at("input").at("cloud"), cloud);
+    EXPECT_EQ(a.at("input").at("config"), dir + "/h.ini");
+    EXPECT_DOUBLE_EQ(a.at("input").at("robot_height_m").get<double>(), 0.6);
     const CliResult overridden =
         runStairmap("detect '" + cloud + "' --config '" + dir + "/h.ini' --robot-height 0.58", dir);
     ASSERT_EQ(overridden.exit_code, 0) << overridden.err;
     EXPECT_EQ(json::parse(overridden.out).at("floor_estimated"), false);
     const CliResult estimated = runStairmap("detect '" + cloud + "'", dir);
     ASSERT_EQ(estimated.exit_code, 0) << estimated.err;
-    EXPECT_EQ(json::parse(estimated.out).at("floor_estimated"), true);
+    const json e = json::parse(estimated.out);
+    EXPECT_EQ(e.at("floor_estimated"), true);
+    EXPECT_TRUE(e.at("input").at("config").is_null());
+    EXPECT_TRUE(e.at("input").at("robot_height_m").is_null());
 }
 
 }  // namespace
