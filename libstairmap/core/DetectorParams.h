@@ -44,7 +44,10 @@ struct DetectorParams {
     double max_step_depth_m = 0.45;   ///< [m] condition 2, maximum run
     double min_slope_deg = 25.0;      ///< [deg] condition 3, minimum slope atan(h/d)
     double max_slope_deg = 60.0;      ///< [deg] condition 3, maximum slope
-    double max_parallel_deg = 10.0;   ///< [deg] condition 4, edges parallel within this
+    /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; spiral stairs
+    /// with wedge treads turn 15-25 deg per step, so 25 is the default (rise/run/slope and
+    /// "no line in between" still reject the negatives).
+    double max_parallel_deg = 25.0;
     /// [-] condition 5: a line between two edges blocks them when it covers at least this fraction
     /// of their common extent (short debris does not block, a ramp's full-width lines do).
     double between_overlap_ratio = 0.5;
@@ -53,9 +56,10 @@ struct DetectorParams {
 
     // --- Algorithm 1 ---
     double init_height_factor = 2.5;  ///< [-] initialisation list: lines within this x max rise
-    /// [-] fewest edges (nosings) of a staircase. The paper asks for more than 4; 3 keeps short
-    /// real flights (2 treads + landing) while 1-2 step stages and curbs are still rejected.
-    int min_steps = 3;
+    /// [-] fewest edges (nosings) of a staircase. The paper asks for more than 4 lines; 4 keeps a
+    /// short real flight of 3 steps (3 treads' nosings + the landing's) while a 1-2 step stage
+    /// (at most 3 nosings with its platform edge) and curbs are rejected.
+    int min_steps = 4;
     int max_staircases_per_direction = 4;  ///< [-] search repeats on the remaining lines
     bool detect_ascending = true;          ///< search above-ground lines
     bool detect_descending = true;         ///< search below-ground lines

@@ -22,7 +22,8 @@ TEST(DetectorParams, DefaultsAreValidAndFollowThePaper) {
     EXPECT_DOUBLE_EQ(p.max_step_depth_m, 0.45);
     EXPECT_DOUBLE_EQ(p.min_slope_deg, 25.0);
     EXPECT_DOUBLE_EQ(p.max_slope_deg, 60.0);
-    EXPECT_DOUBLE_EQ(p.max_parallel_deg, 10.0);
+    EXPECT_DOUBLE_EQ(p.max_parallel_deg, 25.0);  // paper: 10 (see DetectorParams.h)
+    EXPECT_EQ(p.min_steps, 4);
     EXPECT_DOUBLE_EQ(p.init_height_factor, 2.5);
 }
 

