@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "Commands.h"
@@ -17,8 +18,12 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        // --help exits 0; every usage error exits 2.
-        return app.exit(e) == 0 ? 0 : 2;
+        // --help prints the (sub)command's help and exits 0; every usage error is one line, exit 2.
+        if (e.get_exit_code() == 0) return app.exit(e);
+        std::string command = "stairmap";
+        for (const CLI::App* sub : app.get_subcommands()) command += " " + sub->get_name();
+        std::cerr << command << ": error: " << e.what() << " (see `" << command << " --help`)\n";
+        return 2;
     }
     for (const Command& command : commands) {
         if (!command.cli->parsed()) continue;
