@@ -56,7 +56,7 @@ void highestPoints(const PointCloud& cloud, const TopViewParams& p, const GridBo
         if (!usable(q, r2, lo, hi)) continue;
         const int ix = static_cast<int>((q.x() - box.x0) * box.inv_leaf);
         const int iy = static_cast<int>((q.y() - box.y0) * box.inv_leaf);
-        const int c = std::min(iy, box.ny - 1) * box.nx + std::min(ix, box.nx - 1);
+        const int c = std::clamp(iy, 1, box.ny - 2) * box.nx + std::clamp(ix, 1, box.nx - 2);
         if (q.z() > grid_z[c]) {
             grid_z[c] = q.z();
             grid_index[c] = static_cast<int>(i);
@@ -109,7 +109,8 @@ inline Neighbourhood inspect(const float* grid_z, int col, const int (&offsets)[
 
 void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<TopViewCell>& cells) {
     cells.clear();
-    const GridBox box = boundingGrid(cloud, p, kPad);
+    // One spare column beyond kPad: float rounding may put an extreme point one cell further out.
+    const GridBox box = boundingGrid(cloud, p, kPad + 1);
     if (box.nx == 0) return;
     const std::size_t ncols = static_cast<std::size_t>(box.nx) * box.ny;
     // Per-thread scratch grids: re-used between calls, so no page faults for fresh memory.
