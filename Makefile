@@ -38,8 +38,12 @@ configure: deps $(BUILD_DIR)/CMakeCache.txt
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# The main job: replay the bundled two-floor building sequence into a staircase landmark map.
 demo: build
-	$(STAIRMAP) detect datasets/clouds/ascending.pcd
+	$(STAIRMAP) map datasets/two_floor/two_floor.rawlog --poses datasets/two_floor/poses.tum \
+	  --config config/sim_legged_vlp16.ini --out $(DEMO_OUT)/two_floor
+	@echo "stairmap: demo outputs in $(DEMO_OUT)/two_floor (landmarks.json, map.bt, scene.3Dscene, overview.png, ...)"
+	$(STAIRMAP) detect datasets/clouds/ascending_0.pcd --robot-height 0.35
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

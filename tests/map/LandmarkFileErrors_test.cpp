@@ -22,12 +22,6 @@ struct Corruption {
     const char* expected;  ///< substring of the error message
 };
 
-void replaceOnce(std::string& text, const std::string& from, const std::string& to) {
-    const auto pos = text.find(from);
-    ASSERT_NE(pos, std::string::npos) << from;
-    text.replace(pos, from.size(), to);
-}
-
 std::string withJson(const std::string& good, const std::function<void(nlohmann::json&)>& edit) {
     nlohmann::json doc = nlohmann::json::parse(good);
     edit(doc);
@@ -104,7 +98,7 @@ TEST_P(LandmarkFileCorrupt, ThrowsNamingFileAndProblemAndLeavesFileAlone) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, LandmarkFileCorrupt, ::testing::ValuesIn(corruptions()),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(LandmarkFile, MissingFileNamesThePath) {
     const std::string path = test::scratchDir("missing") + "/nope.json";
