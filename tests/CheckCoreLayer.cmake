@@ -1,0 +1,17 @@
+# Fails when the core layer reaches for files, printing, MRPT or OctoMap (STYLE.md: core is Eigen only).
+# Run by ctest as `cmake -DCORE_DIR=... -P CheckCoreLayer.cmake`.
+file(GLOB _files ${CORE_DIR}/*.h ${CORE_DIR}/*.cpp)
+set(_bad "")
+foreach(_f ${_files})
+  file(STRINGS ${_f} _hits REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](fstream|iostream|cstdio|mrpt/|octomap/)")
+  if(_hits)
+    list(APPEND _bad "${_f}: ${_hits}")
+  endif()
+endforeach()
+if(_bad)
+  message(FATAL_ERROR "core/ must not include file I/O, printing, MRPT or OctoMap:\n${_bad}")
+endif()
+list(LENGTH _files _n)
+if(_n LESS 10)
+  message(FATAL_ERROR "expected the core sources in ${CORE_DIR}, found ${_n} files")
+endif()
