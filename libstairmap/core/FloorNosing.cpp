@@ -8,9 +8,10 @@ namespace stairmap {
 std::optional<LineSegment> measureFloorNosing(const std::vector<TopViewCell>& cells,
                                               const LineSegment& first, const Eigen::Vector2d& heading,
                                               double run, const FloorNosingParams& p) {
-    const Eigen::Vector2d u = first.direction();
-    Eigen::Vector2d n(-u.y(), u.x());  // normal pointing down the flight
-    if (n.dot(heading) < 0) n = -n;
+    // The flight's mean direction, not the first lower nosing's own: that edge is often seen only in
+    // part and its fitted direction tilted by a few degrees, which would shift the floor edge.
+    const Eigen::Vector2d n = heading.normalized();  // normal pointing down the flight
+    const Eigen::Vector2d u(-n.y(), n.x());
     const Eigen::Vector2d anchor = first.centre() - run * n;  // predicted floor nosing centre
     const double a = u.dot(first.start - anchor), b = u.dot(first.end - anchor);
     const double lo = std::min(a, b), hi = std::max(a, b);
@@ -43,10 +44,12 @@ std::optional<LineSegment> measureFloorNosing(const std::vector<TopViewCell>& ce
     out.end = centre + hi * u;
     out.z = zsum / count;
     out.num_points = count;
-    out.rho = centre.dot(Eigen::Vector2d(std::cos(first.theta), std::sin(first.theta)));
+    out.theta = std::atan2(n.y(), n.x());
+    if (std::cos(out.theta - first.theta) < 0) out.theta = std::remainder(out.theta + M_PI, 2 * M_PI);
+    out.rho = centre.dot(Eigen::Vector2d(std::cos(out.theta), std::sin(out.theta)));
     if (out.rho < 0) {  // keep rho >= 0 (flip the Hessian branch)
         out.rho = -out.rho;
-        out.theta = std::remainder(first.theta + M_PI, 2 * M_PI);
+        out.theta = std::remainder(out.theta + M_PI, 2 * M_PI);
         out.cov(0, 1) = -out.cov(0, 1);
         out.cov(1, 0) = -out.cov(1, 0);
     }

@@ -56,6 +56,52 @@ double robustWidth(const std::vector<StairEdge>& steps) {
     return (n % 2 == 1) ? lengths[mid] : 0.5 * (lengths[mid - 1] + lengths[mid]);
 }
 
+/// Extent [lo, hi] of an edge along the unit XY direction `lateral`.
+std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral) {
+    const double a = lateral.dot(e.start.head<2>()), b = lateral.dot(e.end.head<2>());
+    return {std::min(a, b), std::max(a, b)};
+}
+
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+
+/// Straight flights only: an edge seen only in part (descending flights at an angle hide the ends
+/// of the first nosings) is lengthened, along its own fitted line, to the flight's lateral extent
+/// (median ends of the well-observed edges, length >= 80 % of the robust width). Observed extent is
+/// never shortened. The location (centre of steps[0]) then no longer shifts sideways.
+void completePartialEdges(std::vector<StairEdge>& steps, double alpha, double width) {
+    constexpr double kMaxTurnRad = 10.0 * M_PI / 180.0;  // beyond this the flight turns (spiral)
+    const Eigen::Vector2d lateral(std::cos(alpha), std::sin(alpha));
+    std::vector<double> los, his;
+    for (const auto& e : steps) {
+        if (std::abs(std::remainder(e.orientationRad() - alpha, M_PI)) > kMaxTurnRad) return;
+        if (e.length() < 0.8 * width) continue;
+        const auto [lo, hi] = lateralExtent(e, lateral);
+        los.push_back(lo);
+        his.push_back(hi);
+    }
+    if (los.size() < 2) return;
+    const double flight_lo = median(los), flight_hi = median(his);
+    for (auto& e : steps) {
+        if (e.length() >= 0.8 * width) continue;
+        Eigen::Vector3d u = e.end - e.start;
+        u.z() = 0.0;
+        const double denom = lateral.dot(u.head<2>().normalized());
+        if (u.norm() < 1e-9 || std::abs(denom) < 0.9) continue;
+        u /= u.norm() * denom;  // moves one unit along `lateral` per unit of parameter
+        const Eigen::Vector3d c = e.centre();
+        const double t_c = lateral.dot(c.head<2>());
+        const auto [lo, hi] = lateralExtent(e, lateral);
+        const Eigen::Vector3d p_lo = c + (std::min(lo, flight_lo) - t_c) * u;
+        const Eigen::Vector3d p_hi = c + (std::max(hi, flight_hi) - t_c) * u;
+        const bool start_is_lo = lateral.dot(e.start.head<2>()) <= lateral.dot(e.end.head<2>());
+        e.start = start_is_lo ? p_lo : p_hi;
+        e.end = start_is_lo ? p_hi : p_lo;
+    }
+}
+
 }  // namespace
 
 double edgeSpacingXY(const StairEdge& a, const StairEdge& b) {
@@ -88,6 +134,11 @@ void estimateGeometry(Staircase& stairs) {
     stairs.step_depth = slopeAgainstIndex(cumulative);
     stairs.step_width = robustWidth(steps);
     stairs.slope_rad = std::atan2(stairs.step_height, stairs.step_depth);
+    // Only descending flights: there the floor's edge hides the ends of the first lower nosings when
+    // seen at an angle. (On the two-floor run, completing ascending edges moved stair_a's location
+    // 20 cm further from the truth: its well-observed edges were themselves cut by the near wall.)
+    if (stairs.direction == StairDirection::Descending)
+        completePartialEdges(stairs.steps, alpha, stairs.step_width);
     stairs.location = steps.front().centre();
 }
 
