@@ -62,6 +62,29 @@ TEST(StaircaseGeometry, WidthIsRobustToPartiallySeenEdges) {
     EXPECT_NEAR(s.step_depth, 0.28, 1e-9) << "spacing is perpendicular, not between centres";
 }
 
+TEST(StaircaseGeometry, DescendingPartialFirstEdgesKeepLocationOnTheFlightAxis) {
+    // Descending flight seen at an angle: the first two edges are cut at one end.
+    const double yaw = 0.4;
+    const Eigen::Vector3d c0(1.5, -0.5, -0.45);
+    Staircase s = knownFlight(6, -0.17, 0.29, 1.1, yaw, c0);
+    s.direction = StairDirection::Descending;
+    s.steps[0].end = s.steps[0].centre() - 0.1 * (s.steps[0].end - s.steps[0].centre());  // 45 % seen
+    s.steps[1].start = s.steps[1].centre() + 0.3 * (s.steps[1].start - s.steps[1].centre());
+    estimateGeometry(s);
+    EXPECT_NEAR((s.location - c0).norm(), 0.0, 1e-6) << s.location.transpose();
+    const Eigen::Vector3d c1 = c0 + 0.29 * Eigen::Vector3d(std::cos(yaw), std::sin(yaw), -0.17 / 0.29);
+    EXPECT_NEAR((s.steps[1].centre() - c1).norm(), 0.0, 1e-6);
+    EXPECT_NEAR(s.step_width, 1.1, 1e-9);
+}
+
+TEST(StaircaseGeometry, PartialEdgesOfAscendingFlightsAreKeptAsObserved) {
+    Staircase s = knownFlight(5, 0.17, 0.28, 1.0, 0.0, {2, 0, 0});
+    s.steps[0].end = s.steps[0].centre();
+    const Eigen::Vector3d seen_centre = s.steps[0].centre();
+    estimateGeometry(s);
+    EXPECT_NEAR((s.location - seen_centre).norm(), 0.0, 1e-9);
+}
+
 TEST(StaircaseGeometry, NoisyEdgesStayWithinMillimetres) {
     std::mt19937 rng(11);
     std::normal_distribution<double> n(0.0, 0.005);
