@@ -9,6 +9,7 @@
 #include "core/LineFusion.h"
 #include "core/RowSegmentation.h"
 #include "core/StairSearch.h"
+#include "core/StaircaseMerge.h"
 #include "core/StaircaseGeometry.h"
 #include "core/TopView.h"
 
@@ -127,6 +128,25 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
     }
 }
 
+/// One flight whose nosings were each split in two (occlusion, a gap in the points) can come out of
+/// the search as two side-by-side chains at the same heights; Definition 2 (collinear edges, lateral
+/// gap <= 0.3 m) recognises them and they are fused into one staircase.
+void mergeSplitFlights(std::vector<Staircase>& found, std::size_t first) {
+    for (std::size_t i = first; i < found.size(); ++i) {
+        for (std::size_t j = i + 1; j < found.size();) {
+            auto merged = found[i].direction == found[j].direction ? mergeStaircases(found[i], found[j])
+                                                                   : std::nullopt;
+            if (!merged) {
+                ++j;
+                continue;
+            }
+            found[i] = *merged;
+            found.erase(found.begin() + static_cast<std::ptrdiff_t>(j));
+            j = i + 1;
+        }
+    }
+}
+
 }  // namespace
 
 StairDetector::StairDetector(const DetectorParams& params) : params_(params) {
@@ -159,6 +179,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
         detectDirection(cells, StairDirection::Ascending, floor, params_, result.staircases);
     if (params_.detect_descending)
         detectDirection(cells, StairDirection::Descending, floor, params_, result.staircases);
+    mergeSplitFlights(result.staircases, 0);
     return result;
 }
 
