@@ -8,8 +8,7 @@ namespace stairmap::io::detail {
 namespace {
 constexpr double kDeg = M_PI / 180.0;
 
-Eigen::Isometry3d mountPose(const IniFieldReader& ini) {
-    const std::string s = "sensor";
+Eigen::Isometry3d mountPose(const IniFieldReader& ini, const std::string& s) {
     // Roll about x, pitch about y, yaw about z: R = Rz(yaw) Ry(pitch) Rx(roll). Positive pitch
     // tilts the sensor's x axis downwards (legged robots look at the ground ahead).
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -28,13 +27,13 @@ std::vector<Eigen::Vector3d> waypoints(const IniFieldReader& ini, const std::str
     if (points.size() < 2) ini.fail(section, "waypoints", "needs at least two 'x y floor_z' groups");
     return points;
 }
-}  // namespace
 
-void loadSensorSection(const IniFieldReader& ini, sim::SimulationConfig& config) {
-    const std::string s = "sensor";
+/// Reads one sensor section ([sensor] or a robot's own, named by its `sensor` key).
+sim::MountedSensor loadMountedSensor(const IniFieldReader& ini, const std::string& s) {
+    sim::MountedSensor mounted;
     const std::string model = ini.getString(s, "model", "vlp16");
-    checked(ini, s, [&] { config.sensor = sim::sensorPreset(model); });
-    auto& p = config.sensor;
+    checked(ini, s, [&] { mounted.sensor = sim::sensorPreset(model); });
+    auto& p = mounted.sensor;
     p.horizontal_resolution_deg = ini.getDouble(s, "horizontal_resolution_deg", p.horizontal_resolution_deg);
     p.min_range_m = ini.getDouble(s, "min_range_m", p.min_range_m);
     p.max_range_m = ini.getDouble(s, "max_range_m", p.max_range_m);
@@ -46,8 +45,17 @@ void loadSensorSection(const IniFieldReader& ini, sim::SimulationConfig& config)
     p.image_height = ini.getInt(s, "image_height", p.image_height);
     if (ini.has(s, "elevations_deg")) p.elevations_deg = ini.getNumbers(s, "elevations_deg");
     checked(ini, s, [&] { sim::validate(p); });
-    config.sensor_label = ini.getString(s, "label", "lidar");
-    config.T_robot_sensor = mountPose(ini);
+    mounted.label = ini.getString(s, "label", "lidar");
+    mounted.T_robot_sensor = mountPose(ini, s);
+    return mounted;
+}
+}  // namespace
+
+void loadSensorSection(const IniFieldReader& ini, sim::SimulationConfig& config) {
+    const sim::MountedSensor mounted = loadMountedSensor(ini, "sensor");
+    config.sensor = mounted.sensor;
+    config.sensor_label = mounted.label;
+    config.T_robot_sensor = mounted.T_robot_sensor;
     config.base_height_m = ini.getDouble("robot", "base_height_m", config.base_height_m);
     if (config.base_height_m < 0 || config.base_height_m > 5)
         ini.fail("robot", "base_height_m", "must be in [0, 5] m");
@@ -70,7 +78,15 @@ void loadRobotRuns(const IniFieldReader& ini, sim::SimulationConfig& config) {
         t.yaw_rate_dps = ini.getDouble(section, "yaw_rate_dps", t.yaw_rate_dps);
         t.scan_rate_hz = ini.getDouble(section, "scan_rate_hz", t.scan_rate_hz);
         t.start_time_s = ini.getDouble(section, "start_time_s", t.start_time_s);
-        t.base_height_m = config.base_height_m;
+        t.base_height_m = ini.getDouble(section, "base_height_m", config.base_height_m);
+        if (t.base_height_m < 0 || t.base_height_m > 5)
+            ini.fail(section, "base_height_m", "must be in [0, 5] m");
+        run.mounted = {config.sensor, config.sensor_label, config.T_robot_sensor};
+        if (ini.has(section, "sensor")) {
+            const std::string sensor_section = ini.getString(section, "sensor", "");
+            if (sensor_section.empty()) ini.fail(section, "sensor", "must name a sensor section");
+            run.mounted = loadMountedSensor(ini, sensor_section);
+        }
         run.drift.xy_std_per_m = ini.getDouble(section, "drift_xy_std_per_m", 0.0);
         run.drift.z_std_per_m = ini.getDouble(section, "drift_z_std_per_m", 0.0);
         run.drift.yaw_std_deg_per_m = ini.getDouble(section, "drift_yaw_std_deg_per_m", 0.0);

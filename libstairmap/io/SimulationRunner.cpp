@@ -46,15 +46,16 @@ nlohmann::json runRobot(const sim::SimulationConfig& config, const sim::RobotRun
     const fs::path rawlog = dir / (run.name + ".rawlog");
     SimRawlogWriter writer(rawlog.string(), options.gzip_level);
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> azimuth(0.0, config.sensor.horizontal_resolution_deg);
+    const sim::MountedSensor& mounted = run.mounted;
+    std::uniform_real_distribution<double> azimuth(0.0, mounted.sensor.horizontal_resolution_deg);
     StampedPoses reported, truth;
     for (const auto& s : samples) {
         const auto t0 = Clock::now();
-        const auto points = sim::simulateScan(config.scene, s.T_world_robot_true * config.T_robot_sensor,
-                                              config.sensor, rng, azimuth(rng));
+        const auto points = sim::simulateScan(config.scene, s.T_world_robot_true * mounted.T_robot_sensor,
+                                              mounted.sensor, rng, azimuth(rng));
         summary.ray_cast_ms += msSince(t0);
-        writer.writeScan(s.stamp_s, s.T_world_robot_reported, s.covariance, config.T_robot_sensor,
-                         points, config.sensor_label);
+        writer.writeScan(s.stamp_s, s.T_world_robot_reported, s.covariance, mounted.T_robot_sensor,
+                         points, mounted.label);
         summary.points += points.size();
         ++summary.scans;
         reported.emplace_back(s.stamp_s, s.T_world_robot_reported);
@@ -74,7 +75,10 @@ nlohmann::json runRobot(const sim::SimulationConfig& config, const sim::RobotRun
             {"rawlog", rawlog.filename().string()},
             {"poses", poses.filename().string()},
             {"gt_trajectory", gt_traj.filename().string()},
-            {"scans", samples.size()}};
+            {"scans", samples.size()},
+            {"sensor", mounted.sensor.model},
+            {"T_robot_sensor", matrixJson(mounted.T_robot_sensor)},
+            {"base_height_m", run.trajectory.base_height_m}};
 }
 
 void writeClouds(const sim::SimulationConfig& config, const fs::path& dir,

@@ -13,11 +13,21 @@
 
 namespace stairmap::sim {
 
+/// A LiDAR/depth camera and where it sits on the robot.
+struct MountedSensor {
+    SensorParams sensor;
+    std::string label = "lidar";  ///< label of the point-cloud observations
+    Eigen::Isometry3d T_robot_sensor = Eigen::Isometry3d::Identity();
+};
+
 /// One robot driving a scripted path; its rawlog gets `name` in the file names.
 struct RobotRun {
     std::string name = "robot";
     TrajectoryParams trajectory;
     DriftParams drift;
+    /// The robot's own sensor (robots of one scene may differ, e.g. a level LiDAR on a wheeled
+    /// robot and a pitched one on a legged robot); the loader fills it from [sensor] by default.
+    MountedSensor mounted;
 };
 
 /// A place where a single accumulated cloud is taken: the robot stands on (x, y, floor_z) facing yaw.

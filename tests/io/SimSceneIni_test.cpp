@@ -52,6 +52,30 @@ TEST(SimSceneIni, StraightStairKeysReachTheGenerator) {
     EXPECT_LT((config.T_robot_sensor.linear() * Eigen::Vector3d::UnitX()).z(), -0.1);
 }
 
+TEST(SimSceneIni, RobotsCanCarryTheirOwnSensor) {
+    const auto path = writeIni("robots.ini",
+                               "[scene]\ntype = ascending\n[robot]\nbase_height_m = 0.3\n"
+                               "[sensor]\nmodel = vlp16\nlabel = level\n"
+                               "[pitched]\nmodel = hdl32\nmount_z_m = 0.4\nmount_pitch_deg = 25\n"
+                               "[trajectory]\nrobots = a b\n"
+                               "[a]\nsensor = pitched\nbase_height_m = 0.45\nwaypoints = 0 0 0; 1 0 0\n"
+                               "[b]\nwaypoints = 0 0 0; 1 0 0\n");
+    const auto config = loadSimulationConfig(path);
+    ASSERT_EQ(config.robots.size(), 2u);
+    const auto& a = config.robots[0];
+    const auto& b = config.robots[1];
+    EXPECT_EQ(a.mounted.sensor.elevations_deg.size(), 32u);
+    EXPECT_EQ(a.mounted.label, "lidar");
+    EXPECT_DOUBLE_EQ(a.mounted.T_robot_sensor.translation().z(), 0.4);
+    // 25 deg down: the sensor's x axis has z = -sin(25 deg).
+    EXPECT_NEAR((a.mounted.T_robot_sensor.linear() * Eigen::Vector3d::UnitX()).z(), -0.4226, 1e-3);
+    EXPECT_DOUBLE_EQ(a.trajectory.base_height_m, 0.45);
+    EXPECT_EQ(b.mounted.sensor.elevations_deg.size(), 16u);
+    EXPECT_EQ(b.mounted.label, "level");
+    EXPECT_DOUBLE_EQ((b.mounted.T_robot_sensor.linear() * Eigen::Vector3d::UnitX()).z(), 0.0);
+    EXPECT_DOUBLE_EQ(b.trajectory.base_height_m, 0.3);
+}
+
 void expectError(const std::string& content, const std::string& needle) {
     const auto path = writeIni("bad.ini", content);
     try {
@@ -73,6 +97,9 @@ TEST(SimSceneIni, BadValuesNameFileSectionAndKey) {
     expectError("[scene]\ntype = ascending\n[clouds]\nposes = 0 0 0\n", "[clouds] poses");
     expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0\n", "[trajectory] waypoints");
     expectError("[scene]\ntype = ascending\n", "neither a trajectory");
+    expectError("[scene]\ntype = ascending\n[trajectory]\nrobots = a\n[a]\nsensor = s\n"
+                "waypoints = 0 0 0; 1 0 0\n[s]\nmodel = vlp99\n",
+                "[s]");
     EXPECT_THROW(loadSimulationConfig("/nonexistent/scene.ini"), std::runtime_error);
 }
 
