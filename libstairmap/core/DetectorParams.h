@@ -55,7 +55,9 @@ struct DetectorParams {
     double min_overlap_ratio = 0.3;
 
     // --- Algorithm 1 ---
-    double init_height_factor = 2.5;  ///< [-] initialisation list: lines within this x max rise
+    /// [-] initialisation list: lines within this x max rise of the floor. 3.5 (not 2.5) lets a
+    /// flight whose first two or three nosings are hidden (debris, occlusion) still start.
+    double init_height_factor = 3.5;
     /// [-] fewest edges (nosings) of a staircase. The paper asks for more than 4 lines; 4 keeps a
     /// short real flight of 3 steps (3 treads' nosings + the landing's) while a 1-2 step stage
     /// (at most 3 nosings with its platform edge) and curbs are rejected.

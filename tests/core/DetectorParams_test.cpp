@@ -24,7 +24,7 @@ TEST(DetectorParams, DefaultsAreValidAndFollowThePaper) {
     EXPECT_DOUBLE_EQ(p.max_slope_deg, 60.0);
     EXPECT_DOUBLE_EQ(p.max_parallel_deg, 25.0);  // paper: 10 (see DetectorParams.h)
     EXPECT_EQ(p.min_steps, 4);
-    EXPECT_DOUBLE_EQ(p.init_height_factor, 2.5);
+    EXPECT_DOUBLE_EQ(p.init_height_factor, 3.5);  // 2.5 missed flights with hidden first steps
 }
 
 struct BadValue {
