@@ -139,6 +139,34 @@ Floor floorLevelFromJson(const json& j, const std::string& path) {
     return f;
 }
 
+json transitToJson(const FloorTransit& t) {
+    json path = json::array();
+    for (const Eigen::Vector3d& p : t.floor_path) path.push_back(jf::toJson(p));
+    return {{"stamp_s", t.stamp_s}, {"floor_path", path}};
+}
+
+FloorTransit transitFromJson(const json& j, const std::string& path) {
+    FloorTransit t;
+    t.stamp_s = numberField(j, "stamp_s", path);
+    const json& points = jf::arrayMember(j, "floor_path", path);
+    if (points.size() < 3) throw std::runtime_error(path + ".floor_path: needs at least 3 points");
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        t.floor_path.push_back(
+            jf::vector3(points[i], path + ".floor_path[" + std::to_string(i) + "]"));
+    }
+    return t;
+}
+
+void readTransits(const json& c, LandmarkMapState& state) {
+    // Optional: version-1 documents written before floor transits existed have none.
+    if (!c.is_object() || !c.contains("transits")) return;
+    const json& transits = jf::arrayMember(c, "transits", "continuation");
+    for (std::size_t i = 0; i < transits.size(); ++i) {
+        state.transits.push_back(
+            transitFromJson(transits[i], "continuation.transits[" + std::to_string(i) + "]"));
+    }
+}
+
 void readContinuation(const json& c, LandmarkMapState& state) {
     const std::string path = "continuation";
     state.next_landmark_id = intField(c, "next_landmark_id", path);
@@ -153,6 +181,7 @@ void readContinuation(const json& c, LandmarkMapState& state) {
         const std::string p = path + ".absorbed[" + std::to_string(i) + "]";
         state.absorbed[intField(absorbed[i], "id", p)] = intField(absorbed[i], "into", p);
     }
+    readTransits(c, state);
 }
 
 void checkHeader(const json& doc) {
@@ -176,6 +205,8 @@ json landmarkStateToJson(const LandmarkMapState& state, const LandmarkParams& pa
     for (const Floor& f : state.floor_levels) levels.push_back(floorLevelToJson(f));
     json absorbed = json::array();
     for (const auto& [gone, into] : state.absorbed) absorbed.push_back({{"id", gone}, {"into", into}});
+    json transits = json::array();
+    for (const FloorTransit& t : state.transits) transits.push_back(transitToJson(t));
     return {{"version", kLandmarkJsonVersion},
             {"frame", "world"},
             {"generator", "stairmap"},
@@ -185,7 +216,8 @@ json landmarkStateToJson(const LandmarkMapState& state, const LandmarkParams& pa
              {{"next_landmark_id", state.next_landmark_id},
               {"next_floor_id", state.next_floor_id},
               {"floor_levels", levels},
-              {"absorbed", absorbed}}},
+              {"absorbed", absorbed},
+              {"transits", transits}}},
             {"params", landmarkParamsToJson(params)}};
 }
 

@@ -24,6 +24,10 @@ void forEachLandmarkParam(Params& p, Visitor&& visit) {
     visit("landmarks", "fusion_min_sigma_deg", p.fusion_min_sigma_deg);
     visit("floors", "floor_merge_tolerance_m", p.floor_merge_tolerance_m);
     visit("floors", "floor_min_robot_samples", p.floor_min_robot_samples);
+    visit("floors", "traversal_margin_m", p.traversal_margin_m);
+    visit("floors", "traversal_height_tolerance_m", p.traversal_height_tolerance_m);
+    visit("floors", "traversal_min_fraction", p.traversal_min_fraction);
+    visit("floors", "max_flight_rise_m", p.max_flight_rise_m);
 }
 
 }  // namespace stairmap::io

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "map/StaircaseTraversal.h"
+
 namespace stairmap {
 namespace {
 
@@ -72,6 +74,22 @@ int reportedFloorId(const LandmarkMapState& state, double z, const LandmarkParam
     return idx < 0 ? -1 : state.floor_levels[idx].id;
 }
 
+/// The latest climb through the flight names its floors; otherwise its seen ends do.
+void linkFloors(const LandmarkMapState& state, StaircaseLandmark& lm, const LandmarkParams& params) {
+    if (lm.stairs.steps.empty()) return;
+    lm.bottom_floor = reportedFloorId(state, staircaseBottomZ(lm.stairs), params);
+    lm.top_floor = reportedFloorId(state, staircaseTopZ(lm.stairs), params);
+    for (auto t = state.transits.rbegin(); t != state.transits.rend(); ++t) {
+        const std::optional<TraversedFloors> floors = traversedFloors(lm.stairs, *t, params);
+        if (!floors) continue;
+        const int low = reportedFloorId(state, floors->low_z, params);
+        const int high = reportedFloorId(state, floors->high_z, params);
+        if (low >= 0) lm.bottom_floor = low;
+        if (high >= 0) lm.top_floor = high;
+        return;
+    }
+}
+
 }  // namespace
 
 double staircaseBottomZ(const Staircase& s) {
@@ -122,11 +140,7 @@ void refreshFloorLevels(LandmarkMapState& state, const LandmarkParams& params) {
     mergeCloseLevels(state, params);
     std::sort(levels.begin(), levels.end(),
               [](const Floor& a, const Floor& b) { return a.id < b.id; });
-    for (StaircaseLandmark& lm : state.staircases) {
-        if (lm.stairs.steps.empty()) continue;
-        lm.bottom_floor = reportedFloorId(state, staircaseBottomZ(lm.stairs), params);
-        lm.top_floor = reportedFloorId(state, staircaseTopZ(lm.stairs), params);
-    }
+    for (StaircaseLandmark& lm : state.staircases) linkFloors(state, lm, params);
 }
 
 }  // namespace stairmap

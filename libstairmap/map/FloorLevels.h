@@ -23,8 +23,9 @@ void addRobotFloorSample(LandmarkMapState& state, double z, const LandmarkParams
 /// Recomputes every level's staircase ends from the confirmed landmarks' observed ends (creating
 /// levels for ends
 /// that fall on none and dropping levels left without support), merges levels closer than the
-/// tolerance (keeping the lower id), and sets each landmark's bottom_floor/top_floor to the nearest
-/// reported level within tolerance (-1 if none).
+/// tolerance (keeping the lower id), and sets each landmark's bottom_floor/top_floor: from the
+/// latest robot transit that went through it (map/StaircaseTraversal.h) when there is one, else
+/// the nearest reported level within tolerance of its bottom/top (-1 if none).
 void refreshFloorLevels(LandmarkMapState& state, const LandmarkParams& params);
 
 }  // namespace stairmap

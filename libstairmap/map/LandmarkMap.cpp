@@ -46,6 +46,13 @@ void validateState(const LandmarkMapState& state) {
             fail("floor id " + std::to_string(f.id) + " is duplicate or not below next_floor_id");
         if (!std::isfinite(f.z)) fail("floor " + std::to_string(f.id) + ": non-finite z");
     }
+    for (std::size_t i = 0; i < state.transits.size(); ++i) {
+        const std::vector<Eigen::Vector3d>& path = state.transits[i].floor_path;
+        const bool finite = std::all_of(path.begin(), path.end(),
+                                        [](const Eigen::Vector3d& p) { return p.allFinite(); });
+        if (path.size() < 3 || !finite)
+            fail("transit " + std::to_string(i) + ": fewer than 3 samples or non-finite ones");
+    }
 }
 
 WeightedStaircase weighted(const StaircaseLandmark& lm) {
@@ -172,19 +179,31 @@ void LandmarkMap::joinOverlappingLandmarks(int index, LandmarkUpdate& update) {
 bool LandmarkMap::addRobotFloor(double floor_z, double stamp_s) {
     (void)stamp_s;  // kept for symmetry with addDetection and future decay of old samples
     if (!std::isfinite(floor_z)) return false;
-    auto snapshot = [this] {
-        std::vector<int> ids;
-        for (const Floor& f : floors()) ids.push_back(f.id);
-        for (const StaircaseLandmark& lm : state_.staircases) {
-            ids.push_back(lm.bottom_floor);
-            ids.push_back(lm.top_floor);
-        }
-        return ids;
-    };
-    const std::vector<int> before = snapshot();
+    const std::vector<int> before = floorSnapshot();
     addRobotFloorSample(state_, floor_z, params_);
     refreshFloors();
-    return snapshot() != before;
+    return floorSnapshot() != before;
+}
+
+bool LandmarkMap::addFloorTransit(const FloorTransit& transit) {
+    if (transit.floor_path.size() < 3 || !std::isfinite(transit.stamp_s)) return false;
+    for (const Eigen::Vector3d& p : transit.floor_path) {
+        if (!p.allFinite()) return false;
+    }
+    const std::vector<int> before = floorSnapshot();
+    state_.transits.push_back(transit);
+    refreshFloors();
+    return floorSnapshot() != before;
+}
+
+std::vector<int> LandmarkMap::floorSnapshot() const {
+    std::vector<int> ids;
+    for (const Floor& f : floors()) ids.push_back(f.id);
+    for (const StaircaseLandmark& lm : state_.staircases) {
+        ids.push_back(lm.bottom_floor);
+        ids.push_back(lm.top_floor);
+    }
+    return ids;
 }
 
 std::vector<Floor> LandmarkMap::floors() const {

@@ -40,6 +40,11 @@ public:
     /// above ground). Returns true if the set of reported floors or a staircase's floors changed.
     bool addRobotFloor(double floor_z, double stamp_s);
 
+    /// Adds a climb or descent of the robot between two floor levels (see FloorTransit); a flight
+    /// it went through is linked to both floors (map/StaircaseTraversal.h). Paths with fewer than
+    /// 3 samples or non-finite ones are ignored. Returns true if a staircase's floors changed.
+    bool addFloorTransit(const FloorTransit& transit);
+
     /// Landmarks ordered by id.
     const std::vector<StaircaseLandmark>& staircases() const { return state_.staircases; }
     /// Reported floors (enough robot samples, or a staircase end), ordered by height.
@@ -56,6 +61,7 @@ private:
     int joinInto(int keep_index, int absorb_index);
     void joinOverlappingLandmarks(int index, LandmarkUpdate& update);
     void refreshFloors();
+    std::vector<int> floorSnapshot() const;  ///< reported floor ids, then each staircase's links
     bool isReported(const Floor& floor) const;
 
     LandmarkParams params_;

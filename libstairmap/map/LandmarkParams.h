@@ -39,6 +39,12 @@ struct LandmarkParams {
     double floor_merge_tolerance_m = 0.40;  ///< [m] heights within this belong to the same floor
     int floor_min_robot_samples = 5;   ///< [-] robot floor samples before a floor is reported
                                        ///< (samples taken while climbing stay below this)
+    // --- [floors] linking a flight to the floors the robot climbed between through it
+    double traversal_margin_m = 0.30;     ///< [m] slack around the flight's corridor and height range
+    double traversal_height_tolerance_m = 0.30;  ///< [m] climb sample height vs the flight's there
+    double traversal_min_fraction = 0.6;  ///< [-] share of the climb samples that must be on the flight
+    double max_flight_rise_m = 3.7;       ///< [m] most rise of one flight (IBC 1011.8: 12 ft);
+                                          ///< a climb over more went through a landing
 };
 
 /// Throws std::invalid_argument naming the first field that is out of range.
@@ -71,6 +77,14 @@ inline void validateLandmarkParams(const LandmarkParams& p) {
             "must be in [1, 1000]");
     require(p.floor_merge_tolerance_m > 0 && p.floor_merge_tolerance_m < 5,
             "floor_merge_tolerance_m", "must be in (0, 5) m");
+    require(p.traversal_margin_m >= 0 && p.traversal_margin_m < 2, "traversal_margin_m",
+            "must be in [0, 2) m");
+    require(p.traversal_height_tolerance_m > 0 && p.traversal_height_tolerance_m < 2,
+            "traversal_height_tolerance_m", "must be in (0, 2) m");
+    require(p.traversal_min_fraction > 0 && p.traversal_min_fraction <= 1, "traversal_min_fraction",
+            "must be in (0, 1]");
+    require(p.max_flight_rise_m > 0 && p.max_flight_rise_m < 20, "max_flight_rise_m",
+            "must be in (0, 20) m");
     require(p.floor_min_robot_samples >= 1, "floor_min_robot_samples", "must be >= 1");
 }
 

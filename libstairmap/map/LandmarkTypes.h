@@ -42,11 +42,21 @@ struct Floor {
     int support() const { return robot_samples + staircase_ends; }
 };
 
+/// One climb or descent of the robot between floor levels (the mapper's level guard saw it leave
+/// and regain level ground). Kept in the map so that a flight detected later is linked too.
+struct FloorTransit {
+    /// [m] world; z is the floor under the robot (robot z minus its height). First and last are
+    /// on level ground, the others were taken while climbing (subsampled, see the mapper).
+    std::vector<Eigen::Vector3d> floor_path;
+    double stamp_s = 0.0;  ///< [s] when the robot regained level ground
+};
+
 /// Everything needed to continue a map exactly (what the JSON document stores).
 struct LandmarkMapState {
     std::vector<StaircaseLandmark> staircases;  ///< ordered by id
     std::vector<Floor> floor_levels;  ///< every height cluster, reported or not, ordered by id
     std::map<int, int> absorbed;      ///< retired landmark id -> id of the landmark it joined
+    std::vector<FloorTransit> transits;  ///< the robot's climbs between floors, oldest first
     int next_landmark_id = 0;
     int next_floor_id = 0;
 };
