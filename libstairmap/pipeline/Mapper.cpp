@@ -33,6 +33,7 @@ Mapper::Mapper(const MapperParams& params, LandmarkMap landmarks)
       window_(params.scheduling.window_scans, params.scheduling.window_s),
       scheduler_(params.scheduling),
       level_guard_(params.scheduling.max_level_slope_deg),
+      transit_recorder_(params.landmarks.floor_merge_tolerance_m),
       detector_(params.detector),
       landmarks_(std::move(landmarks)) {
     if (params_.map.insert_every_n_scans < 1) {
@@ -51,7 +52,9 @@ void Mapper::processScan(const Scan& scan) {
     window_.push(scan.stamp_s, std::move(points_world));
     // On stairs the scheduler is not consulted, so its counters keep growing and the first scan
     // back on level ground triggers a detection.
-    if (!level_guard_.update(scan.T_world_robot.translation())) return;
+    const bool level = level_guard_.update(scan.T_world_robot.translation());
+    recordTransit(scan, level);
+    if (!level) return;
     if (scheduler_.update(scan.stamp_s, scan.T_world_robot)) detectAround(scan);
 }
 
@@ -93,6 +96,17 @@ void Mapper::recordTrajectory(const Scan& scan) {
         return;
     }
     trajectory_.push_back(TrajectorySample{scan.stamp_s, position});
+}
+
+void Mapper::recordTransit(const Scan& scan, bool level) {
+    // A climb from one floor level to another links the flights it went through to both floors.
+    const Eigen::Vector3d floor_position =
+        scan.T_world_robot.translation() - Eigen::Vector3d(0.0, 0.0, params_.sensor.robot_height_m);
+    const std::optional<FloorTransit> transit =
+        transit_recorder_.update(floor_position, level, scan.stamp_s);
+    if (!transit) return;
+    ++stats_.floor_transits;
+    if (landmarks_.addFloorTransit(*transit) && on_changed_) on_changed_(landmarks_);
 }
 
 std::optional<double> Mapper::submapFloorZ() const {

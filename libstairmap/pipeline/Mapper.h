@@ -16,6 +16,7 @@
 #include "pipeline/MapperStats.h"
 #include "pipeline/Scheduler.h"
 #include "pipeline/Submap.h"
+#include "pipeline/TransitRecorder.h"
 
 namespace stairmap::pipeline {
 
@@ -61,6 +62,7 @@ private:
     PointCloud prepareWorldPoints(const Scan& scan);
     void insertIntoVoxelMap(const PointCloud& points_world, const Scan& scan);
     void recordTrajectory(const Scan& scan);
+    void recordTransit(const Scan& scan, bool level);
     void detectAround(const Scan& scan);
     void addToLandmarks(const Staircase& staircase_world, const Scan& scan, bool& changed);
     std::optional<double> submapFloorZ() const;
@@ -70,6 +72,7 @@ private:
     ScanWindow window_;
     Scheduler scheduler_;
     LevelGuard level_guard_;
+    TransitRecorder transit_recorder_;
     StairDetector detector_;
     LandmarkMap landmarks_;
     std::vector<TrajectorySample> trajectory_;

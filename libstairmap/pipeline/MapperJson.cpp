@@ -42,6 +42,7 @@ nlohmann::json mapperStatsToJson(const MapperStats& s) {
             {"mean_submap_points", s.submap_points * per_run},
             {"detections", s.detections},
             {"detections_rejected", s.detections_rejected},
+            {"floor_transits", s.floor_transits},
             {"log_duration_s", s.logDuration()},
             {"stage_total_ms",
              {{"prepare", ms(s.times.prepare_s)},

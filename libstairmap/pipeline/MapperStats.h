@@ -25,6 +25,7 @@ struct MapperStats {
     std::size_t submap_points = 0;        ///< summed over detector runs
     std::size_t detections = 0;           ///< staircases returned by the detector
     std::size_t detections_rejected = 0;  ///< detections the landmark map did not accept
+    std::size_t floor_transits = 0;  ///< climbs between floor levels given to the landmark map
     double first_stamp_s = 0.0;           ///< [s] stamp of the first mapped scan
     double last_stamp_s = 0.0;            ///< [s] stamp of the last mapped scan
     StageTimes times;
