@@ -48,12 +48,15 @@ TEST(TwoFloorDrive, OneLandmarkPerStaircaseWithTrueGeometry) {
         const Eigen::Vector3d up = truth.nosings.back().centre() - truth.nosings.front().centre();
         EXPECT_NEAR(std::remainder(lm->stairs.heading_rad - std::atan2(up.y(), up.x()), 2 * M_PI),
                     0.0, 5 * M_PI / 180);
-        // Its bottom floor is the ground floor.
-        bool bottom_ok = false;
+        // Its bottom floor is the ground floor, its top floor the upper one (the robot walked up
+        // stair_a and down stair_b, which links each to both floors).
+        bool bottom_ok = false, top_ok = false;
         for (const Floor& f : mapper.landmarks().floors()) {
             bottom_ok |= f.id == lm->bottom_floor && std::abs(f.z - truth.bottom_z) < 0.15;
+            top_ok |= f.id == lm->top_floor && std::abs(f.z - truth.top_z) < 0.15;
         }
         EXPECT_TRUE(bottom_ok);
+        EXPECT_TRUE(top_ok) << "top_floor " << lm->top_floor;
     }
 }
 
