@@ -192,6 +192,9 @@ bool LandmarkMap::addFloorTransit(const FloorTransit& transit) {
     }
     const std::vector<int> before = floorSnapshot();
     state_.transits.push_back(transit);
+    // Bounded (repeated runs over one building keep adding climbs): the oldest go first.
+    constexpr std::size_t kMaxTransits = 256;
+    if (state_.transits.size() > kMaxTransits) state_.transits.erase(state_.transits.begin());
     refreshFloors();
     return floorSnapshot() != before;
 }

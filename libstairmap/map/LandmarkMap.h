@@ -42,7 +42,8 @@ public:
 
     /// Adds a climb or descent of the robot between two floor levels (see FloorTransit); a flight
     /// it went through is linked to both floors (map/StaircaseTraversal.h). Paths with fewer than
-    /// 3 samples or non-finite ones are ignored. Returns true if a staircase's floors changed.
+    /// 3 samples or non-finite ones are ignored; the latest 256 are kept. Returns true if a
+    /// staircase's floors changed.
     bool addFloorTransit(const FloorTransit& transit);
 
     /// Landmarks ordered by id.

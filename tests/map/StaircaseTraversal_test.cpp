@@ -155,6 +155,19 @@ TEST(StaircaseTraversal, TransitsSurviveSaveAndLoad) {
     EXPECT_NE(loaded.staircases()[0].top_floor, -1);
 }
 
+TEST(StaircaseTraversal, OnlyTheLatestTransitsAreKept) {
+    std::mt19937 rng(41);
+    LandmarkMap map;
+    for (int i = 0; i < 300; ++i) {
+        FloorTransit t = climb(flight(), rng);
+        t.stamp_s = i;
+        map.addFloorTransit(t);
+    }
+    ASSERT_EQ(map.state().transits.size(), 256u);
+    EXPECT_EQ(map.state().transits.front().stamp_s, 44.0);
+    EXPECT_EQ(map.state().transits.back().stamp_s, 299.0);
+}
+
 TEST(StaircaseTraversal, DocumentWithoutTransitsStillLoads) {
     // Version-1 documents written before transits existed have no "transits" member.
     std::mt19937 rng(39);
