@@ -1,12 +1,14 @@
 #pragma once
-// Small output-file helpers for the mapper's writers.
+// Crash-safe replacement of output files (landmark maps, stats).
 
 #include <string>
 
 namespace stairmap::io {
 
-/// Writes `text` to `path` atomically: a temp file next to it, flushed, then renamed over `path`,
-/// so readers never see a half-written file. Throws std::runtime_error naming the path.
+/// Writes `text` to `path` atomically: a temp file `path.tmp` next to it, fsync'ed, renamed over
+/// `path`, then the directory fsync'ed. A kill at any moment leaves either the old or the new
+/// file, never a half-written one. Throws std::runtime_error naming the path (the old file is
+/// left unchanged).
 void writeTextFileAtomic(const std::string& path, const std::string& text);
 
 }  // namespace stairmap::io
