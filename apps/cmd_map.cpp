@@ -38,6 +38,12 @@ double secondsSince(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+/// The log's duration from its trajectory (for the progress ETA); unknown without one.
+std::optional<double> logDuration(const std::optional<io::TumTrajectory>& poses) {
+    if (!poses || poses->poses().size() < 2) return std::nullopt;
+    return poses->poses().back().stamp_s - poses->poses().front().stamp_s;
+}
+
 /// A static robot: the identity pose at every time (for logs without poses).
 io::TumTrajectory staticTrajectory() {
     io::TumTrajectory trajectory;
@@ -65,9 +71,11 @@ public:
 
     int run() {
         const auto t0 = Clock::now();
-        io::RawlogScanSource source(opt_.rawlog, sourceParams(), trajectory());
+        const std::optional<io::TumTrajectory> poses = trajectory();
+        io::RawlogScanSource source(opt_.rawlog, sourceParams(), poses);
         source.setWarningHandler([this](const std::string& m) { warn(m); });
-        io::ProgressBar progress(std::cerr, opt_.progress || io::ProgressBar::stderrIsTty());
+        io::ProgressBar progress(std::cerr, opt_.progress || io::ProgressBar::stderrIsTty(),
+                                 opt_.static_robot ? std::nullopt : logDuration(poses));
         std::optional<std::string> error = replay(source, progress);
         progress.finish();
         processing_s_ = secondsSince(t0);

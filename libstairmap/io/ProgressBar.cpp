@@ -1,5 +1,6 @@
 #include "io/ProgressBar.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -7,8 +8,8 @@
 
 namespace stairmap::io {
 
-ProgressBar::ProgressBar(std::ostream& out, bool enabled, std::optional<std::size_t> total)
-    : out_(out), enabled_(enabled), total_(total) {}
+ProgressBar::ProgressBar(std::ostream& out, bool enabled, std::optional<double> total_log_s)
+    : out_(out), enabled_(enabled), total_log_s_(total_log_s) {}
 
 bool ProgressBar::stderrIsTty() { return ::isatty(STDERR_FILENO) == 1; }
 
@@ -20,13 +21,16 @@ void ProgressBar::update(std::size_t done, double log_time_s) {
     drawn_ = true;
     const double wall_s = std::chrono::duration<double>(now - start_).count();
     const double rate = wall_s > 0 ? done / wall_s : 0.0;
+    const double rtf = wall_s > 0 ? log_time_s / wall_s : 0.0;
     char line[160];
-    if (total_ && *total_ > 0 && rate > 0) {
-        const double eta_s = (static_cast<double>(*total_) - done) / rate;
-        std::snprintf(line, sizeof(line), "\r[%5.1f%%] %zu/%zu scans  %.1f scans/s  ETA %.0f s   ",
-                      100.0 * done / *total_, done, *total_, rate, eta_s);
+    if (total_log_s_ && *total_log_s_ > 0 && rtf > 0) {
+        // The log advances at `rtf` log seconds per wall second: that gives the time left.
+        const double fraction = std::min(1.0, log_time_s / *total_log_s_);
+        const double eta_s = std::max(0.0, *total_log_s_ - log_time_s) / rtf;
+        std::snprintf(line, sizeof(line),
+                      "\r[%5.1f%%] %zu scans  %.1f scans/s  %.1fx real time  ETA %.0f s   ",
+                      100.0 * fraction, done, rate, rtf, eta_s);
     } else {
-        const double rtf = wall_s > 0 ? log_time_s / wall_s : 0.0;
         std::snprintf(line, sizeof(line), "\r%zu scans  %.1f scans/s  log %.1f s  %.1fx real time   ",
                       done, rate, log_time_s, rtf);
     }
