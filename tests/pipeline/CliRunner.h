@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace stairmap::testing {
 
@@ -28,9 +29,11 @@ inline nlohmann::json readJson(const std::filesystem::path& path) {
     return nlohmann::json::parse(readText(path));
 }
 
-/// Fresh scratch directory for one test (removed first if a previous run left it).
+/// Fresh scratch directory for one test (removed first if a previous run left it). The process id
+/// keeps parallel ctest processes of one suite (each re-running a shared SetUpTestSuite) apart.
 inline std::filesystem::path scratch(const std::string& name) {
-    const auto dir = std::filesystem::path(STAIRMAP_TEST_TMP) / "pipeline" / name;
+    const auto dir = std::filesystem::path(STAIRMAP_TEST_TMP) / "pipeline" /
+                     (name + "." + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -78,6 +78,8 @@ protected:
         result_ = new CliResult(runStairmap(twoFloorArgs(*out_ / "run1"), *out_));
     }
     static void TearDownTestSuite() {
+        std::error_code ignored;
+        fs::remove_all(*out_, ignored);  // per-process folder: do not let them pile up
         delete out_;
         delete result_;
     }
