@@ -14,15 +14,19 @@ struct Entry {
     int cell;
 };
 
-/// Counting sort of the entries by row (stable), O(n + rows).
-void bucketByRow(const std::vector<Entry>& in, int nrows, std::vector<Entry>& out,
-                 std::vector<int>& row_start) {
-    row_start.assign(nrows + 1, 0);
-    for (const Entry& e : in) ++row_start[e.row + 1];
-    for (int r = 0; r < nrows; ++r) row_start[r + 1] += row_start[r];
-    std::vector<int> fill(row_start.begin(), row_start.end() - 1);
+/// Stable counting sort of `in` by key(e) in [0, nkeys) into `out`; `start` receives the offset of
+/// each key's run (+ end). O(n + nkeys).
+template <typename Key>
+void countingSort(const std::vector<Entry>& in, int nkeys, Key key, std::vector<Entry>& out,
+                  std::vector<int>& start) {
+    start.assign(nkeys + 1, 0);
+    for (const Entry& e : in) ++start[key(e) + 1];
+    for (int k = 0; k < nkeys; ++k) start[k + 1] += start[k];
+    thread_local std::vector<int> tl_fill;
+    std::vector<int>& fill = tl_fill;
+    fill.assign(start.begin(), start.end() - 1);
     out.resize(in.size());
-    for (const Entry& e : in) out[fill[e.row]++] = e;
+    for (const Entry& e : in) out[fill[key(e)]++] = e;
 }
 
 }  // namespace
@@ -40,9 +44,10 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
     const float inv_row = static_cast<float>(1.0 / p.row_height_m);
     const float skip_lo = static_cast<float>(p.skip_z_lo), skip_hi = static_cast<float>(p.skip_z_hi);
     // Per-thread scratch, re-used between calls (no page faults on fresh memory).
-    thread_local std::vector<Entry> tl_entries, tl_sorted;
+    thread_local std::vector<Entry> tl_entries, tl_by_azimuth, tl_sorted;
     thread_local std::vector<int> tl_row_start;
     std::vector<Entry>& entries = tl_entries;
+    std::vector<Entry>& by_azimuth = tl_by_azimuth;
     std::vector<Entry>& sorted = tl_sorted;
     std::vector<int>& row_start = tl_row_start;
     entries.clear();
@@ -62,28 +67,25 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
             if (r >= 0 && r < nrows) entries.push_back({r, az, range, i});
         }
     }
-    bucketByRow(entries, nrows, sorted, row_start);
-    // Per row: nearest entry per azimuth bin in a flat array; only the touched bins are read back
-    // (sorted), so a sparse row costs its own size, not azimuth_bins.
-    std::vector<int> nearest(p.azimuth_bins, -1);
-    std::vector<int> touched;
+    // Sorted by azimuth, then (stably) by row: each row comes out in azimuth order, and the entries
+    // of one cell of the array are consecutive, in candidate order.
+    countingSort(entries, p.azimuth_bins, [](const Entry& e) { return e.az; }, by_azimuth, row_start);
+    countingSort(by_azimuth, nrows, [](const Entry& e) { return e.row; }, sorted, row_start);
     for (int r = 0; r < nrows; ++r) {
         if (row_start[r] == row_start[r + 1]) continue;
-        touched.clear();
-        for (int k = row_start[r]; k < row_start[r + 1]; ++k) {
-            int& slot = nearest[sorted[k].az];
-            if (slot < 0) touched.push_back(sorted[k].az);
-            if (slot < 0 || sorted[k].range < sorted[slot].range) slot = k;
-        }
-        std::sort(touched.begin(), touched.end());
         rows.row_begin.push_back(static_cast<int>(rows.x.size()));
-        for (int az : touched) {
-            const TopViewCell& c = cells[sorted[nearest[az]].cell];
+        for (int k = row_start[r]; k < row_start[r + 1];) {
+            int best = k;  // the nearest entry of this cell; the first one on a tie
+            int end = k + 1;
+            for (; end < row_start[r + 1] && sorted[end].az == sorted[k].az; ++end) {
+                if (sorted[end].range < sorted[best].range) best = end;
+            }
+            const TopViewCell& c = cells[sorted[best].cell];
             rows.x.push_back(c.x);
             rows.y.push_back(c.y);
             rows.z.push_back(c.z);
-            rows.azimuth.push_back(az);
-            nearest[az] = -1;
+            rows.azimuth.push_back(sorted[k].az);
+            k = end;
         }
     }
     rows.row_begin.push_back(static_cast<int>(rows.x.size()));

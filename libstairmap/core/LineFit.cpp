@@ -33,7 +33,7 @@ LineSegment fitLine(const RowPointView& pts, std::size_t first, std::size_t last
         theta += M_PI;
         nrm = -nrm;
     }
-    theta = std::remainder(theta, 2 * M_PI);
+    if (theta > M_PI) theta -= 2 * M_PI;  // 0.5 * atan2 is in (-pi/2, pi/2]: now in (-pi, pi]
     const Eigen::Vector2d u(-nrm.y(), nrm.x());
     const double s_tt = u.x() * u.x() * sxx + 2 * u.x() * u.y() * sxy + u.y() * u.y() * syy;
     const double s_nn = std::max(0.0, sxx + syy - s_tt);
@@ -47,7 +47,7 @@ LineSegment fitLine(const RowPointView& pts, std::size_t first, std::size_t last
     seg.num_points = static_cast<int>(n);
     const double var_rho_c = s2 / n;
     const double var_theta = s2 / std::max(s_tt, 1e-12);
-    const double drho_dtheta = -cx * std::sin(theta) + cy * std::cos(theta);
+    const double drho_dtheta = -cx * nrm.y() + cy * nrm.x();  // d(rho)/d(theta) at the centroid
     seg.cov << var_rho_c + drho_dtheta * drho_dtheta * var_theta, drho_dtheta * var_theta,
         drho_dtheta * var_theta, var_theta;
     // End points: projections of the first and last point onto the line.

@@ -77,7 +77,18 @@ LineSegment keepBetter(const LineSegment& a, const LineSegment& b) {
     return out;
 }
 
+/// Gap between the XY bounding boxes of two segments (0 when they overlap).
+double boxGap(const LineSegment& a, const LineSegment& b) {
+    const Eigen::Vector2d a_lo = a.start.cwiseMin(a.end), a_hi = a.start.cwiseMax(a.end);
+    const Eigen::Vector2d b_lo = b.start.cwiseMin(b.end), b_hi = b.start.cwiseMax(b.end);
+    const Eigen::Vector2d gap = (b_lo - a_hi).cwiseMax(a_lo - b_hi).cwiseMax(0.0);
+    return gap.norm();
+}
+
 bool sameEdge(const LineSegment& a, const LineSegment& b, const LineFusionParams& p) {
+    // Pieces that pass the tests below have a point of the shorter within max_distance across and
+    // max_gap along the longer, so boxes farther apart than that never match: a cheap early out.
+    if (boxGap(a, b) > p.max_distance_m + p.max_gap_m) return false;
     // Both end points of the shorter line lie near the longer line (short pieces have poorly
     // defined angles, so this replaces an angle test for them), and the extents nearly touch.
     const LineSegment& longer = a.length() >= b.length() ? a : b;

@@ -23,7 +23,9 @@ float gap2(const float* x, const float* y, int i, int j) {
 /// Iterative end-point fit on [first, last]: splits at the farthest point from the chord while it
 /// is farther than d_p. The split point goes to both halves so no end point is dropped.
 void splitChain(const RowBuffer& b, Range chain, double d_p, std::vector<Range>& out) {
-    std::vector<Range> stack{chain};
+    thread_local std::vector<Range> tl_stack;  // scratch re-used between calls
+    std::vector<Range>& stack = tl_stack;
+    stack.assign(1, chain);
     while (!stack.empty()) {
         const Range r = stack.back();
         stack.pop_back();
@@ -82,16 +84,20 @@ void segmentLinear(const RowBuffer& b, const SegmentationParams& p,
                    std::vector<LineSegment>& lines) {
     const int n = static_cast<int>(b.x.size());
     const float max_gap2 = static_cast<float>(p.max_point_gap_m * p.max_point_gap_m);
-    std::vector<Range> parts;
+    thread_local std::vector<Range> tl_parts;  // scratch re-used between calls
+    std::vector<Range>& parts = tl_parts;
     int chain_start = 0;
     for (int i = 1; i <= n; ++i) {
         if (i < n && gap2(b.x.data(), b.y.data(), i - 1, i) <= max_gap2) continue;
-        if (i - chain_start >= p.min_line_points) splitChain(b, {chain_start, i - 1}, p.split_distance_m, parts);
-        else parts.push_back({chain_start, i - 1});  // too short to split; kept as a barrier
+        // One chain at a time: lines never bridge a gap, and a chain too short for a line is
+        // not fitted at all.
+        if (i - chain_start >= p.min_line_points) {
+            parts.clear();
+            splitChain(b, {chain_start, i - 1}, p.split_distance_m, parts);
+            fitAndMerge(b, parts, p, lines);
+        }
         chain_start = i;
     }
-    // Parts of different chains must not merge: fitAndMerge requires touching ranges.
-    fitAndMerge(b, parts, p, lines);
 }
 
 /// Distance of point i to the chord through points a and b.
@@ -111,16 +117,20 @@ void rotateInto(const float* x, const float* y, const float* z, int n, int start
     b.y.clear();
     b.z.clear();
     const float max_gap2 = static_cast<float>(max_gap * max_gap);
+    const float d_p_f = static_cast<float>(d_p);
+    // prev, i, next walk the ring together (no modulo per point: it is an integer division).
+    int prev = start == 0 ? n - 1 : start - 1, i = start;
     for (int k = 0; k < n; ++k) {
-        const int i = (start + k) % n;
-        if (k > 0 && k + 1 < n) {
-            const int prev = (start + k - 1) % n, next = (start + k + 1) % n;
-            if (gap2(x, y, prev, next) <= max_gap2 && chordDistance(x, y, prev, i, next) > d_p)
-                continue;
+        const int next = i + 1 == n ? 0 : i + 1;
+        const bool spike = k > 0 && k + 1 < n && gap2(x, y, prev, next) <= max_gap2 &&
+                           chordDistance(x, y, prev, i, next) > d_p_f;
+        if (!spike) {
+            b.x.push_back(x[i]);
+            b.y.push_back(y[i]);
+            b.z.push_back(z[i]);
         }
-        b.x.push_back(x[i]);
-        b.y.push_back(y[i]);
-        b.z.push_back(z[i]);
+        prev = i;
+        i = next;
     }
 }
 
@@ -135,7 +145,9 @@ void segmentCircularRow(const float* x, const float* y, const float* z, int n,
     for (int k = 0; k < n && start < 0; ++k) {
         if (gap2(x, y, (k + n - 1) % n, k) > max_gap2) start = k;
     }
-    RowBuffer b;
+    // Per-thread scratch re-used between rows and calls: rows are many and short.
+    thread_local RowBuffer tl_buffer, tl_ring;
+    RowBuffer& b = tl_buffer;
     if (start >= 0) {
         rotateInto(x, y, z, n, start, p.split_distance_m, p.max_point_gap_m, b);
         segmentLinear(b, p, lines);
@@ -146,7 +158,10 @@ void segmentCircularRow(const float* x, const float* y, const float* z, int n,
     std::vector<Range> parts;
     splitChain(b, {0, static_cast<int>(b.x.size()) - 1}, p.split_distance_m, parts);
     const int shift = parts.size() > 1 ? parts[1].first : 0;
-    RowBuffer ring;
+    RowBuffer& ring = tl_ring;
+    ring.x.clear();
+    ring.y.clear();
+    ring.z.clear();
     const int m = static_cast<int>(b.x.size());
     for (int k = 0; k < m; ++k) {
         ring.x.push_back(b.x[(shift + k) % m]);
