@@ -1,5 +1,7 @@
 #include "core/CylindricalRows.h"
 
+#include "core/AzimuthBin.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -40,7 +42,7 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
     rows.row_begin.clear();
     rows.azimuth_bins = p.azimuth_bins;
     const int nrows = static_cast<int>(std::ceil((p.z_hi - p.z_lo) / p.row_height_m));
-    const float az_scale = static_cast<float>(p.azimuth_bins / (2 * M_PI));
+    const AzimuthBinner azimuth_bin(p.azimuth_bins);
     const float inv_row = static_cast<float>(1.0 / p.row_height_m);
     const float skip_lo = static_cast<float>(p.skip_z_lo), skip_hi = static_cast<float>(p.skip_z_hi);
     // Per-thread scratch, re-used between calls (no page faults on fresh memory).
@@ -60,8 +62,7 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
         if (!(fr >= 0.f)) continue;
         const int row = static_cast<int>(fr);  // truncation == floor for fr >= 0
         const int other = (fr - row < 0.5f) ? row - 1 : row + 1;
-        int az = static_cast<int>((std::atan2(c.y, c.x) + static_cast<float>(M_PI)) * az_scale);
-        az = std::clamp(az, 0, p.azimuth_bins - 1);
+        const int az = azimuth_bin(c.x, c.y);
         const float range = std::sqrt(c.x * c.x + c.y * c.y);
         for (int r : {row, other}) {
             if (r >= 0 && r < nrows) entries.push_back({r, az, range, i});

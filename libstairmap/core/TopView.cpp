@@ -17,10 +17,6 @@ struct GridBox {
     float inv_leaf = 0;
 };
 
-bool usable(const Eigen::Vector3f& p, float r2max, float z_lo, float z_hi) {
-    return p.z() >= z_lo && p.z() <= z_hi && p.x() * p.x() + p.y() * p.y() <= r2max;
-}
-
 /// Running XY bounds; `v < m ? v : m` keeps m when v is NaN.
 struct XyBounds {
     float min_x = std::numeric_limits<float>::max(), min_y = min_x;
@@ -126,15 +122,21 @@ void highestPoints(const PointCloud& cloud, const TopViewParams& p, const GridBo
                    const HeightCode& code, Column* grid) {
     const float r2 = static_cast<float>(p.max_range_m * p.max_range_m);
     const float lo = static_cast<float>(p.z_lo), hi = static_cast<float>(p.z_hi);
+    // The range test is needed only when a corner of the box lies beyond max_range (indoors the
+    // whole box is usually within it).
+    const float far_x = std::max(std::abs(box.x0), std::abs(box.x0 + box.nx / box.inv_leaf));
+    const float far_y = std::max(std::abs(box.y0), std::abs(box.y0 + box.ny / box.inv_leaf));
+    const bool check_range = far_x * far_x + far_y * far_y > r2;
+    // Points lie at least kPad columns inside the padded box; the test guards the neighbour
+    // look-ups and drops non-finite coordinates before the conversion to int.
+    const float g_lo = kPad, gx_hi = static_cast<float>(box.nx - kPad);
+    const float gy_hi = static_cast<float>(box.ny - kPad);
     for (const auto& q : cloud) {
-        if (!usable(q, r2, lo, hi)) continue;
+        if (!(q.z() >= lo && q.z() <= hi)) continue;
+        if (check_range && q.x() * q.x() + q.y() * q.y() > r2) continue;
         const float gx = (q.x() - box.x0) * box.inv_leaf, gy = (q.y() - box.y0) * box.inv_leaf;
-        // Points within max_range lie at least kPad columns inside the padded box; the test is
-        // only a guard for the neighbour look-ups (one unsigned compare per axis).
+        if (!(gx >= g_lo && gx < gx_hi && gy >= g_lo && gy < gy_hi)) continue;
         const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
-        if (static_cast<unsigned>(ix - kPad) >= static_cast<unsigned>(box.nx - 2 * kPad) ||
-            static_cast<unsigned>(iy - kPad) >= static_cast<unsigned>(box.ny - 2 * kPad))
-            continue;
         Column& c = grid[iy * box.nx + ix];
         const int z_q = std::min(code.encode(q.z()), 65535);
         if (z_q > c.z_q) {
