@@ -96,28 +96,31 @@ GridBox boundingGrid(const PointCloud& cloud, const TopViewParams& p, int pad) {
 
 constexpr int kPad = 3;  ///< empty columns skipped (and grid padding) for the neighbour look-up
 
-/// One column of the grid in one 32-bit word, so that the random updates of an unordered cloud
-/// hit a small array (a 10 m x 10 m grid is 640 kB): the highest point's height in quanta above
-/// z_lo in the high 16 bits (0 = empty column), then its position inside the column in 1/256 of a
-/// leaf (0.1 mm at 2.5 cm; heights: 0.1 mm for a 6 m band). "Keep the higher point" is then an
-/// unsigned max, free of branches: whether a point is higher is unpredictable in a cloud, and the
-/// mispredictions cost a quarter of the pass. Equal heights keep the larger fx, fy (any is fine).
+/// One column of the grid in one 64-bit word: the highest point's height in quanta above z_lo in
+/// the high 32 bits (0 = empty column; a quantum is 3 nm for a 6 m band), then its position inside
+/// the column in 1/65536 of a leaf. "Keep the higher point" is then an unsigned max, free of
+/// branches: whether a point is higher is unpredictable in a cloud, and mispredicted branches cost
+/// a quarter of the pass. The grid stays small (a 10 m x 10 m area at 2.5 cm is 1.3 MB), the point
+/// is never looked up again in the cloud, and equal heights (exact ties) keep the larger fx, fy.
 struct Column {
-    std::uint32_t bits;
-    int z_q() const { return static_cast<int>(bits >> 16); }
-    int fx() const { return static_cast<int>((bits >> 8) & 0xffu); }
-    int fy() const { return static_cast<int>(bits & 0xffu); }
+    std::uint64_t bits;
+    int z_q() const { return static_cast<int>(bits >> 32); }
+    int fx() const { return static_cast<int>((bits >> 16) & 0xffffu); }
+    int fy() const { return static_cast<int>(bits & 0xffffu); }
 };
+constexpr int kMaxQuanta = (1 << 30) - 1;   ///< fits int arithmetic with the thresholds
+constexpr float kFraction = 65536.f;        ///< position steps per leaf
 
-/// Height quantisation: z_q = 1 + (z - z_lo) / step, so 1..65535 covers [z_lo, z_hi].
+/// Height quantisation: z_q = 1 + (z - z_lo) / step, so 1..kMaxQuanta covers [z_lo, z_hi].
 struct HeightCode {
-    float z_lo = 0, step = 1, inv_step = 1;
+    float z_lo = 0;
+    double step = 1, inv_step = 1;
     HeightCode(double lo, double hi)
         : z_lo(static_cast<float>(lo)),
-          step(static_cast<float>(std::max(hi - lo, 1e-3) / 65534.0)),
-          inv_step(1.0f / step) {}
+          step(std::max(hi - lo, 1e-3) / (kMaxQuanta - 1)),
+          inv_step(1.0 / step) {}
     int encode(float z) const { return 1 + static_cast<int>((z - z_lo) * inv_step); }
-    float decode(int z_q) const { return z_lo + (static_cast<float>(z_q) - 0.5f) * step; }
+    float decode(int z_q) const { return static_cast<float>(z_lo + (z_q - 0.5) * step); }
     int quanta(double dz) const { return static_cast<int>(std::lround(dz / step)); }
 };
 
@@ -145,10 +148,10 @@ void highestPoints(const PointCloud& cloud, const TopViewParams& p, const GridBo
         // empty word, which the max ignores.
         const float sx = keep ? gx : g_lo, sy = keep ? gy : g_lo, sz = keep ? q.z() : lo;
         const int ix = static_cast<int>(sx), iy = static_cast<int>(sy);
-        const auto z_q = static_cast<std::uint32_t>(std::min(code.encode(sz), 65535));
-        const auto fx = static_cast<std::uint32_t>(std::min(static_cast<int>((sx - ix) * 256.f), 255));
-        const auto fy = static_cast<std::uint32_t>(std::min(static_cast<int>((sy - iy) * 256.f), 255));
-        const std::uint32_t word = keep ? (z_q << 16 | fx << 8 | fy) : 0u;
+        const auto z_q = static_cast<std::uint64_t>(std::min(code.encode(sz), kMaxQuanta));
+        const auto fx = static_cast<std::uint64_t>(std::min(static_cast<int>((sx - ix) * kFraction), 65535));
+        const auto fy = static_cast<std::uint64_t>(std::min(static_cast<int>((sy - iy) * kFraction), 65535));
+        const std::uint64_t word = keep ? (z_q << 32 | fx << 16 | fy) : 0u;
         Column& c = grid[iy * box.nx + ix];
         c.bits = std::max(c.bits, word);
     }
@@ -169,10 +172,7 @@ inline bool flatNeighbourhood(const Column* grid, int col, int nx, int z_lo, int
 
 /// True when the four columns from `c` on are all empty.
 inline bool allEmpty4(const Column* c) {
-    std::uint64_t w[2];
-    std::memcpy(w, c, sizeof(w));
-    static_assert(sizeof(Column) * 4 == sizeof(w), "four columns in 16 bytes");
-    return (w[0] | w[1]) == 0;
+    return (c[0].bits | c[1].bits | c[2].bits | c[3].bits) == 0;
 }
 
 /// Grid offsets of the columns 1..kPad leaves away from the robot along the exact radial direction
@@ -220,6 +220,12 @@ struct Thresholds {
     int min_dz, spill_dz, spill_max, ground_lo, ground_hi;
 };
 
+/// Quanta of a height that may lie outside [z_lo, z_hi] (clamped to 0 .. kMaxQuanta + 1).
+int codeClamped(const HeightCode& code, double z) {
+    const double q = 1.0 + (z - code.z_lo) / code.step;
+    return static_cast<int>(std::clamp(q, 0.0, kMaxQuanta + 1.0));
+}
+
 /// Candidate flags of an occupied column (0: not a nosing candidate).
 std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy, const Thresholds& t) {
     const int z = grid[col].z_q();
@@ -257,8 +263,8 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
     t.min_dz = code.quanta(p.edge_min_dz_m);
     t.spill_dz = code.quanta(p.edge_spill_dz_m);
     t.spill_max = code.quanta(p.edge_spill_max_dz_m);
-    t.ground_lo = std::clamp(code.encode(static_cast<float>(p.ground_z_lo)), 0, 65536);
-    t.ground_hi = std::clamp(code.encode(static_cast<float>(p.ground_z_hi)), 0, 65536);
+    t.ground_lo = codeClamped(code, p.ground_z_lo);
+    t.ground_hi = codeClamped(code, p.ground_z_hi);
     const float leaf = 1.0f / box.inv_leaf;
     for (int iy = 0; iy < box.ny; ++iy) {
         // Direction from the robot, taken at the column centre (grid-aligned, no point noise).
@@ -276,8 +282,8 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
             const float cx = box.x0 + (ix + 0.5f) * leaf;
             const std::uint8_t flags = classify(grid.data(), col, box.nx, cx, cy, t);
             if (flags == 0) continue;
-            cells.push_back({box.x0 + (ix + (c.fx() + 0.5f) / 256.f) * leaf,
-                             box.y0 + (iy + (c.fy() + 0.5f) / 256.f) * leaf, code.decode(c.z_q()),
+            cells.push_back({box.x0 + (ix + (c.fx() + 0.5f) / kFraction) * leaf,
+                             box.y0 + (iy + (c.fy() + 0.5f) / kFraction) * leaf, code.decode(c.z_q()),
                              flags});
         }
     }

@@ -1,0 +1,152 @@
+// Top view (paper Sec. III-A): highest point per column and nosing candidates, on exact geometry.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "core/TopView.h"
+
+namespace stairmap {
+namespace {
+
+constexpr float kFloorZ = -0.5f, kTreadZ = -0.33f;  // one 17 cm step up
+constexpr float kStepX = 2.0f, kEndX = 3.0f;        // the tread spans x in [2, 3], |y| < 0.6
+
+/// Floor from x = 0.3 to the step, the tread beyond it, sampled every 1 cm (at least 1.3 mm from
+/// any column boundary, so no point's column depends on float rounding) with a distinct tiny
+/// height offset per point so that the highest point of every column is unique.
+PointCloud stepCloud() {
+    PointCloud cloud;
+    int k = 0;
+    for (int i = 0; 0.3013f + 0.01f * i < kEndX; ++i) {
+        for (int j = 0; j < 120; ++j) {
+            const float x = 0.3013f + 0.01f * i, y = -0.5987f + 0.01f * j;
+            const float z = (x < kStepX ? kFloorZ : kTreadZ) + 1e-6f * static_cast<float>(k++ % 97);
+            cloud.emplace_back(x, y, z);
+        }
+    }
+    return cloud;
+}
+
+TopViewParams stepParams() {
+    TopViewParams p;  // defaults: 2.5 cm columns, 5 cm drop
+    p.ground_z_lo = kFloorZ - 0.03;
+    p.ground_z_hi = kFloorZ + 0.03;
+    return p;
+}
+
+TEST(TopView, FrontDropsMarkTheNosingAndNothingInsideTheTread) {
+    std::vector<TopViewCell> cells;
+    buildTopView(stepCloud(), stepParams(), cells);
+    int nosing = 0;
+    for (const auto& c : cells) {
+        if (!(c.flags & kFrontDrop)) continue;
+        // The only ascending nosing candidates are on the tread's near edge (its first column,
+        // whose neighbour towards the robot is the lower floor) and not at the sides of the tread,
+        // whose radial neighbours are on the tread too.
+        EXPECT_NEAR(c.z, kTreadZ, 0.001) << c.x << ", " << c.y;
+        EXPECT_LT(c.x, kStepX + 0.05f) << c.x << ", " << c.y;
+        ++nosing;
+    }
+    // The edge is 1.2 m long: about 48 columns of 2.5 cm.
+    EXPECT_GE(nosing, 40);
+    EXPECT_LE(nosing, 56);
+}
+
+TEST(TopView, BackDropsMarkTheFarEndsAndTheFloorIsNoAscendingNosing) {
+    std::vector<TopViewCell> cells;
+    buildTopView(stepCloud(), stepParams(), cells);
+    int far_end = 0;
+    for (const auto& c : cells) {
+        if (std::abs(c.z - kFloorZ) < 0.01f) {
+            EXPECT_FALSE(c.flags & kFrontDrop) << "floor column at " << c.x << ", " << c.y;
+        }
+        if ((c.flags & kBackDrop) && c.x > kEndX - 0.05f && std::abs(c.y) < 0.5f) ++far_end;
+    }
+    EXPECT_GE(far_end, 30);  // nothing beyond the tread's end: a drop away from the robot
+}
+
+TEST(TopView, EachCandidateIsTheHighestPointOfItsColumn) {
+    const PointCloud cloud = stepCloud();
+    const TopViewParams p = stepParams();
+    std::vector<TopViewCell> cells;
+    buildTopView(cloud, p, cells);
+    ASSERT_FALSE(cells.empty());
+    for (const auto& c : cells) {
+        const int cx = static_cast<int>(std::floor(c.x / p.leaf_m));
+        const int cy = static_cast<int>(std::floor(c.y / p.leaf_m));
+        const Eigen::Vector3f* best = nullptr;
+        for (const auto& q : cloud) {
+            if (static_cast<int>(std::floor(q.x() / p.leaf_m)) != cx ||
+                static_cast<int>(std::floor(q.y() / p.leaf_m)) != cy)
+                continue;
+            if (!best || q.z() > best->z()) best = &q;
+        }
+        ASSERT_NE(best, nullptr) << "a candidate in an empty column at " << c.x << ", " << c.y;
+        // The very point (positions stored in 1/65536 of a column).
+        EXPECT_NEAR(c.z, best->z(), 1e-6);
+        EXPECT_NEAR(c.x, best->x(), 1e-5);
+        EXPECT_NEAR(c.y, best->y(), 1e-5);
+    }
+}
+
+/// Same candidates with the same flags; positions to 0.01 mm (a grid with another origin rounds
+/// the in-column positions differently).
+testing::AssertionResult sameCells(const std::vector<TopViewCell>& a,
+                                   const std::vector<TopViewCell>& b) {
+    if (a.size() != b.size())
+        return testing::AssertionFailure() << a.size() << " vs " << b.size() << " candidates";
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::abs(a[i].x - b[i].x) > 1e-5f || std::abs(a[i].y - b[i].y) > 1e-5f ||
+            std::abs(a[i].z - b[i].z) > 1e-5f || a[i].flags != b[i].flags)
+            return testing::AssertionFailure()
+                   << "candidate " << i << ": (" << a[i].x << ", " << a[i].y << ", " << a[i].z
+                   << ") flags " << int(a[i].flags) << " vs (" << b[i].x << ", " << b[i].y << ", "
+                   << b[i].z << ") flags " << int(b[i].flags);
+    }
+    return testing::AssertionSuccess();
+}
+
+TEST(TopView, PointOrderDoesNotMatter) {
+    PointCloud cloud = stepCloud();
+    std::vector<TopViewCell> ordered, shuffled;
+    buildTopView(cloud, stepParams(), ordered);
+    std::mt19937 rng(5);
+    std::shuffle(cloud.begin(), cloud.end(), rng);
+    buildTopView(cloud, stepParams(), shuffled);
+    EXPECT_TRUE(sameCells(ordered, shuffled));
+}
+
+TEST(TopView, NonFinitePointsAndPointsOutOfRangeOrBandAreIgnored) {
+    const PointCloud clean = stepCloud();
+    PointCloud dirty = clean;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    dirty.emplace_back(nan, 0.f, 0.f);
+    dirty.emplace_back(2.5f, nan, -0.3f);
+    dirty.emplace_back(2.5f, 0.1f, nan);
+    dirty.emplace_back(inf, 0.f, -0.3f);
+    dirty.emplace_back(-inf, -inf, -inf);
+    dirty.emplace_back(2.5f, 0.2f, 3.5f);    // above z_hi (3 m): a ceiling
+    dirty.emplace_back(2.5f, 0.2f, -3.5f);   // below z_lo
+    dirty.emplace_back(40.f, 0.f, -0.3f);    // beyond max_range (10 m)
+    dirty.emplace_back(7.2f, 7.2f, -0.3f);   // inside the +-10 m box, beyond the 10 m circle
+    std::vector<TopViewCell> a, b;
+    buildTopView(clean, stepParams(), a);
+    buildTopView(dirty, stepParams(), b);
+    EXPECT_TRUE(sameCells(a, b));
+}
+
+TEST(TopView, EmptyAndAllInvalidCloudsGiveNoCells) {
+    std::vector<TopViewCell> cells{{1, 2, 3, kFrontDrop}};
+    buildTopView({}, stepParams(), cells);
+    EXPECT_TRUE(cells.empty());
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    buildTopView({{nan, nan, nan}, {50.f, 50.f, 0.f}}, stepParams(), cells);
+    EXPECT_TRUE(cells.empty());
+}
+
+}  // namespace
+}  // namespace stairmap
