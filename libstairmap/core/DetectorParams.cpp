@@ -55,6 +55,7 @@ void DetectorParams::validate() const {
     requireRange(max_slope_deg, 0.0, 90.0, "max_slope_deg");
     requireLess(min_slope_deg, max_slope_deg, "min_slope_deg", "max_slope_deg");
     requireRange(max_parallel_deg, 0.0, 90.0, "max_parallel_deg");
+    requireRange(edge_height_tolerance_m, 0.0, 0.1, "edge_height_tolerance_m");
     requireRange(between_overlap_ratio, 0.0, 1.0, "between_overlap_ratio");
     requireRange(min_overlap_ratio, 0.0, 1.0, "min_overlap_ratio");
     requireRange(init_height_factor, 1.0, 20.0, "init_height_factor");

@@ -48,6 +48,15 @@ struct DetectorParams {
     /// with wedge treads turn 15-25 deg per step, so 25 is the default (rise/run/slope and
     /// "no line in between" still reject the negatives).
     double max_parallel_deg = 25.0;
+    /// [m] sparse-cloud mode. Above its own height a LiDAR sees no tread, only the riser below
+    /// each nosing, and the highest hit there reads up to one beam spacing low (2 deg: 7 cm at
+    /// 2 m). With a tolerance > 0, conditions 1 and 3 accept a pair whose rise is off by up to this
+    /// much, lines lying under a higher line are dropped as riser hits (RiserHits.h), and a
+    /// flight's edges far below its fitted nosing line are raised onto it. 0 = the paper's strict
+    /// tests. Single clouds (`stairmap detect`, config/default.ini) use 0.04; the mapping presets
+    /// use 0: their accumulated submaps see the nosings from many poses, and there the tolerance
+    /// admitted riser hits that biased the fused rise by 0.4 cm on the two-floor run.
+    double edge_height_tolerance_m = 0.04;
     /// [-] condition 5: a line between two edges blocks them when it covers at least this fraction
     /// of their common extent (short debris does not block, a ramp's full-width lines do).
     double between_overlap_ratio = 0.5;

@@ -7,6 +7,7 @@
 #include "core/FloorEstimation.h"
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
+#include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
 #include "core/StairSearch.h"
 #include "core/StaircaseMerge.h"
@@ -15,6 +16,8 @@
 
 namespace stairmap {
 namespace {
+
+constexpr double kRiserHitMinDrop = 0.02;  ///< [m] an edge this far below its flight's fit is a riser hit
 
 /// Floor height: the given one refined to the dominant level within +-window, or estimated.
 std::pair<double, bool> resolveFloor(const PointCloud& cloud, std::optional<double> floor_z,
@@ -63,6 +66,11 @@ std::vector<LineSegment> extractLines(const std::vector<TopViewCell>& cells, std
     fp.max_distance_m = p.vertical_merge_dist_m;
     fp.max_gap_m = p.max_collinear_gap_m;
     fuseDuplicateLines(lines, fp);
+    if (p.edge_height_tolerance_m > 0) {  // sparse-cloud mode, see DetectorParams
+        RiserHitParams rp;
+        rp.max_dz_m = p.max_step_height_m;
+        dropRiserHits(lines, rp);
+    }
     return lines;
 }
 
@@ -123,6 +131,8 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
             edges.push_back(lines[idx]);
             if (!up) edges.back().z = 2 * floor_z - edges.back().z;
         }
+        // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
+        if (p.edge_height_tolerance_m > 0) raiseLowEdges(edges, kRiserHitMinDrop);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
         out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }

@@ -9,7 +9,7 @@ namespace stairmap {
 namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
-constexpr double kBetweenDz = 0.02;  ///< [m] a blocking line is this far from both edges in z
+constexpr double kBetweenDz = 0.02;  ///< [m] a blocking line is this far from both edges in z ...
 
 /// Common extent [lo, hi] of two segments along u.
 std::pair<double, double> commonExtent(const LineSegment& a, const LineSegment& b,
@@ -27,6 +27,13 @@ std::pair<int, int> zRange(const std::vector<LineSegment>& lines, double z_lo, d
     return {static_cast<int>(lo - lines.begin()), static_cast<int>(hi - lines.begin())};
 }
 
+/// Index range of the lines one rise (condition 1, with the height tolerance) above z.
+std::pair<int, int> nextStepRange(const std::vector<LineSegment>& lines, double z,
+                                  const DetectorParams& p) {
+    const double tol = p.edge_height_tolerance_m + 1e-9;
+    return zRange(lines, z + p.min_step_height_m - tol, z + p.max_step_height_m + tol);
+}
+
 struct Candidate {
     std::vector<int> steps;
     Eigen::Vector2d normal;
@@ -38,8 +45,7 @@ void extend(const std::vector<LineSegment>& lines, const std::vector<char>& used
             const DetectorParams& p, Candidate& c) {
     for (;;) {
         const int last = c.steps.back();
-        const auto [b, e] = zRange(lines, lines[last].z + p.min_step_height_m - 1e-9,
-                                   lines[last].z + p.max_step_height_m + 1e-9);
+        const auto [b, e] = nextStepRange(lines, lines[last].z, p);
         int best = -1;
         double best_overlap = 0.0;
         for (int j = b; j < e; ++j) {
@@ -66,8 +72,7 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
         zRange(lines, floor_z + min_first, floor_z + p.init_height_factor * p.max_step_height_m);
     for (int i = b; i < e; ++i) {
         if (used[i]) continue;
-        const auto [jb, je] = zRange(lines, lines[i].z + p.min_step_height_m - 1e-9,
-                                     lines[i].z + p.max_step_height_m + 1e-9);
+        const auto [jb, je] = nextStepRange(lines, lines[i].z, p);
         for (int j = jb; j < je; ++j) {
             if (used[j]) continue;
             const auto pair = checkStairPair(lines[i], lines[j], p);
@@ -85,13 +90,16 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
 std::optional<StairPair> checkStairPair(const LineSegment& lower, const LineSegment& upper,
                                         const DetectorParams& p) {
     StairPair s;
+    const double tol = p.edge_height_tolerance_m;  // riser hits read low, see DetectorParams
     s.rise = upper.z - lower.z;  // condition 1
-    if (s.rise < p.min_step_height_m || s.rise > p.max_step_height_m) return std::nullopt;
+    if (s.rise < p.min_step_height_m - tol || s.rise > p.max_step_height_m + tol) return std::nullopt;
     if (lineAngle(lower, upper) > p.max_parallel_deg * kDegToRad) return std::nullopt;  // cond. 4
     s.run = lineSpacing(lower, upper);  // condition 2
     if (s.run < p.min_step_depth_m || s.run > p.max_step_depth_m) return std::nullopt;
-    const double slope = std::atan2(s.rise, s.run) / kDegToRad;  // condition 3
-    if (slope < p.min_slope_deg || slope > p.max_slope_deg) return std::nullopt;
+    // condition 3, for some rise within the tolerance
+    if (std::atan2(s.rise + tol, s.run) / kDegToRad < p.min_slope_deg ||
+        std::atan2(std::max(0.0, s.rise - tol), s.run) / kDegToRad > p.max_slope_deg)
+        return std::nullopt;
     const Eigen::Vector2d u = lower.direction();
     const auto [lo, hi] = commonExtent(lower, upper, u);
     s.overlap = hi - lo;
@@ -109,7 +117,10 @@ bool hasLineBetween(const std::vector<LineSegment>& lines, int lower, int upper,
     const LineSegment& b = lines[upper];
     const Eigen::Vector2d u = a.direction();
     const auto [lo, hi] = commonExtent(a, b, u);
-    const auto [mb, me] = zRange(lines, a.z + kBetweenDz, b.z - kBetweenDz);
+    // ... and beyond the height tolerance: an edge read low (a riser hit) has its own tread's
+    // points within that tolerance above it, and they are no surface in between.
+    const double dz = std::max(kBetweenDz, p.edge_height_tolerance_m);
+    const auto [mb, me] = zRange(lines, a.z + dz, b.z - dz);
     const double margin = 0.5 * p.min_step_depth_m;
     for (int m = mb; m < me; ++m) {
         if (m == lower || m == upper) continue;

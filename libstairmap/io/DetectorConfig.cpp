@@ -104,6 +104,7 @@ void readDetection(const SectionReader& r, DetectorParams& p) {
     r.number("min_slope_deg", p.min_slope_deg);
     r.number("max_slope_deg", p.max_slope_deg);
     r.number("max_parallel_deg", p.max_parallel_deg);
+    r.number("edge_height_tolerance_m", p.edge_height_tolerance_m);
     r.number("between_overlap_ratio", p.between_overlap_ratio);
     r.number("min_overlap_ratio", p.min_overlap_ratio);
     r.number("init_height_factor", p.init_height_factor);
