@@ -11,16 +11,6 @@
 namespace stairmap {
 namespace {
 
-/// Algorithm 2, lines 2-9: does any edge pair of a and b satisfy Definition 2?
-bool haveCommonStair(const Staircase& a, const Staircase& b, const MergeParams& p) {
-    for (const StairEdge& ea : a.steps) {
-        for (const StairEdge& eb : b.steps) {
-            if (isSameStairEdge(ea, eb, p)) return true;
-        }
-    }
-    return false;
-}
-
 /// Index of a's unpaired step nearest in height to z, within half a rise; -1 if none.
 int nearestLevel(const Staircase& a, const std::vector<bool>& paired, double z, double half_rise) {
     int best = -1;
@@ -97,6 +87,15 @@ void requireWeights(const WeightedStaircase& w) {
 }
 
 }  // namespace
+
+bool haveCommonStair(const Staircase& a, const Staircase& b, const MergeParams& params) {
+    for (const StairEdge& ea : a.steps) {
+        for (const StairEdge& eb : b.steps) {
+            if (isSameStairEdge(ea, eb, params)) return true;
+        }
+    }
+    return false;
+}
 
 std::optional<Staircase> mergeStaircases(const Staircase& a, const Staircase& b,
                                          const MergeParams& params) {

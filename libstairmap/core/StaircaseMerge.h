@@ -37,6 +37,10 @@ enum class StepAnchor {
     AssociatedElsewhere  ///< the caller knows they are one flight: merge even without a pair
 };
 
+/// Algorithm 2, lines 2-9: some edge of a and some edge of b are the same stair (Definition 2).
+/// Cost O(k m).
+bool haveCommonStair(const Staircase& a, const Staircase& b, const MergeParams& params = {});
+
 /// Algorithm 2 on two detections in the same frame with the same `direction` and ordering
 /// (steps outward from the observer's floor, as the detector makes them; for a flight seen from
 /// both ends, canonicalise both first with canonicalStaircase()). Steps are paired as described

@@ -5,6 +5,7 @@
 
 #include "core/StairEdgeFusion.h"
 #include "core/StaircaseCanonical.h"
+#include "core/StaircaseMerge.h"
 
 namespace stairmap {
 namespace {
@@ -110,12 +111,7 @@ bool footprintsOverlap(const Staircase& a, const Staircase& b, const LandmarkPar
 
 bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
     if (a.steps.empty() || b.steps.empty() || !headingsAgree(a, b, params)) return false;
-    const MergeParams same_stair = toMergeParams(params);
-    for (const StairEdge& ea : a.steps) {
-        for (const StairEdge& eb : b.steps) {
-            if (isSameStairEdge(ea, eb, same_stair)) return true;
-        }
-    }
+    if (haveCommonStair(a, b, toMergeParams(params))) return true;
     if (params.use_footprint && footprintsOverlap(a, b, params)) return true;
     return params.max_extrapolated_steps > 0 &&
            (continuesFlight(a, b, params) || continuesFlight(b, a, params));

@@ -18,7 +18,8 @@ bool headingsAgree(const Staircase& a, const Staircase& b, const LandmarkParams&
 /// [lowest edge - rise, highest edge] overlap by params.footprint_min_z_overlap_m.
 bool footprintsOverlap(const Staircase& a, const Staircase& b, const LandmarkParams& params);
 
-/// Headings agree and (some step pair is the same stair, or footprints overlap when enabled, or
+/// Headings agree and (some step pair is the same stair: core haveCommonStair, Algorithm 2's
+/// match test; or footprints overlap when enabled; or
 /// one continues the other along the flight, see LandmarkParams::max_extrapolated_steps).
 bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams& params);
 

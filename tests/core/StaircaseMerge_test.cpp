@@ -68,6 +68,8 @@ TEST(StaircaseMerge, OneCommonStepIsEnoughAndOrderDoesNotMatter) {
 
 TEST(StaircaseMerge, NoCommonStepIsNoMatch) {
     const FlightTruth truth;
+    EXPECT_FALSE(haveCommonStair(exact(truth, 0, 2), exact(truth, 4, 6)));
+    EXPECT_TRUE(haveCommonStair(exact(truth, 0, 2), exact(truth, 2, 6)));
     EXPECT_FALSE(mergeStaircases(exact(truth, 0, 2), exact(truth, 4, 6)).has_value());
     FlightTruth elsewhere = truth;
     elsewhere.origin_xy = {3.0, 0.0};
