@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/StaircaseCanonical.h"
+#include "core/StaircaseMerge.h"
 #include "map/FloorLevels.h"
 #include "map/StaircaseAssociation.h"
-#include "map/StaircaseCanonical.h"
-#include "map/StaircaseFusion.h"
 
 namespace stairmap {
 namespace {
@@ -57,6 +57,15 @@ void validateState(const LandmarkMapState& state) {
 
 WeightedStaircase weighted(const StaircaseLandmark& lm) {
     return {lm.stairs, lm.step_observations};
+}
+
+/// Algorithm 2 (core/StaircaseMerge.h) on two flights sameStaircase() already associated (by a
+/// Definition-2 step pair, footprint overlap or continuation), so no common step is required.
+void mergeInto(StaircaseLandmark& lm, const WeightedStaircase& other, const LandmarkParams& params) {
+    std::optional<WeightedStaircase> merged =
+        mergeCanonical(weighted(lm), other, toMergeParams(params), StepAnchor::AssociatedElsewhere);
+    lm.stairs = std::move(merged->stairs);
+    lm.step_observations = std::move(merged->step_observations);
 }
 
 }  // namespace
@@ -131,19 +140,14 @@ int LandmarkMap::createLandmark(const Staircase& canonical, double stamp_s) {
 }
 
 void LandmarkMap::fuseDetection(int index, const Staircase& canonical) {
-    StaircaseLandmark& lm = state_.staircases[index];
     const WeightedStaircase det{canonical, std::vector<int>(canonical.steps.size(), 1)};
-    WeightedStaircase fused = fuseStaircases(weighted(lm), det, params_);
-    lm.stairs = std::move(fused.stairs);
-    lm.step_observations = std::move(fused.step_observations);
+    mergeInto(state_.staircases[index], det, params_);
 }
 
 int LandmarkMap::joinInto(int keep_index, int absorb_index) {
     StaircaseLandmark absorbed = state_.staircases[absorb_index];
     StaircaseLandmark& keep = state_.staircases[keep_index];
-    WeightedStaircase fused = fuseStaircases(weighted(keep), weighted(absorbed), params_);
-    keep.stairs = std::move(fused.stairs);
-    keep.step_observations = std::move(fused.step_observations);
+    mergeInto(keep, weighted(absorbed), params_);
     keep.observations += absorbed.observations;
     keep.bottom_observed = keep.bottom_observed || absorbed.bottom_observed;
     keep.top_observed = keep.top_observed || absorbed.top_observed;

@@ -1,8 +1,9 @@
 #pragma once
 // Persistent multi-floor staircase landmark map (issue 4, items 4 "Landmarks/Floors").
 // Detections, already transformed into the world frame, are associated with existing landmarks
-// (paper Definition 2 on any step pair, or overlapping footprints), fused with covariance-weighted
-// line fusion in the spirit of Algorithm 2, and unmatched ones start new landmarks with new IDs.
+// (paper Definition 2 on any step pair, overlapping footprints, or one continuing the other), merged
+// by the core's Algorithm 2 (core/StaircaseMerge.h: mergeCanonical, covariance-weighted line fusion),
+// and unmatched ones start new landmarks with new IDs.
 // Floors are height clusters of where the robot drove plus staircase ends; each staircase links
 // the floor it leaves from to the floor it reaches.
 

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/MergeParams.h"
+
 namespace stairmap {
 
 /// Association, fusion and floor parameters. Defaults relax the paper's Definition 2 (5 cm / 5 cm /
@@ -46,6 +48,20 @@ struct LandmarkParams {
     double max_flight_rise_m = 3.7;       ///< [m] most rise of one flight (IBC 1011.8: 12 ft);
                                           ///< a climb over more went through a landing
 };
+
+/// The core merge's parameters (core/MergeParams.h) as the landmark map uses them: Definition 2
+/// with the map's relaxed gates, a positive edge overlap, and its fusion tolerances.
+inline MergeParams toMergeParams(const LandmarkParams& p) {
+    MergeParams m;
+    m.max_height_diff_m = p.match_height_m;
+    m.max_distance_m = p.match_distance_m;
+    m.max_angle_deg = p.match_angle_deg;
+    m.min_edge_overlap_m = p.min_edge_overlap_m;
+    m.endpoint_tolerance_m = p.endpoint_tolerance_m;
+    m.min_sigma_m = p.fusion_min_sigma_m;
+    m.min_sigma_deg = p.fusion_min_sigma_deg;
+    return m;
+}
 
 /// Throws std::invalid_argument naming the first field that is out of range.
 inline void validateLandmarkParams(const LandmarkParams& p) {

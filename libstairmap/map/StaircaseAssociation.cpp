@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "map/StaircaseCanonical.h"
+#include "core/StairEdgeFusion.h"
+#include "core/StaircaseCanonical.h"
+#include "core/StaircaseMerge.h"
 
 namespace stairmap {
 namespace {
@@ -11,25 +13,6 @@ namespace {
 constexpr double kDegToRad = M_PI / 180.0;
 constexpr double kDefaultRise = 0.15;  // [m] used only when a flight has a single step
 constexpr double kDefaultRun = 0.25;   // [m]
-
-double lineDistanceXy(const StairEdge& line, const Eigen::Vector3d& p) {
-    const Eigen::Vector2d d = (line.end - line.start).head<2>();
-    const double len = d.norm();
-    const Eigen::Vector2d v = (p - line.start).head<2>();
-    if (len < 1e-9) return v.norm();
-    return std::abs(d.x() * v.y() - d.y() * v.x()) / len;
-}
-
-/// Length of the overlap of b's projection onto a's direction with a itself.
-double overlapAlong(const StairEdge& a, const StairEdge& b) {
-    const Eigen::Vector2d d = (a.end - a.start).head<2>();
-    const double len = d.norm();
-    if (len < 1e-9) return 0.0;
-    const Eigen::Vector2d u = d / len;
-    const double s1 = (b.start - a.start).head<2>().dot(u);
-    const double s2 = (b.end - a.start).head<2>().dot(u);
-    return std::min(len, std::max(s1, s2)) - std::max(0.0, std::min(s1, s2));
-}
 
 double angleDiff(double a, double b) {
     return std::abs(std::atan2(std::sin(a - b), std::cos(a - b)));
@@ -101,25 +84,13 @@ bool continuesFlight(const Staircase& lower, const Staircase& upper, const Landm
     const Eigen::Vector3d offset(shift.x(), shift.y(), static_cast<double>(k) * rise_l);
     predicted.start += offset;
     predicted.end += offset;
-    LandmarkParams widened = params;
-    widened.match_height_m += 0.005 * static_cast<double>(k);
-    widened.match_distance_m += 0.01 * static_cast<double>(k);
-    return sameStair(predicted, next, widened);
+    MergeParams widened = toMergeParams(params);
+    widened.max_height_diff_m += 0.005 * static_cast<double>(k);
+    widened.max_distance_m += 0.01 * static_cast<double>(k);
+    return isSameStairEdge(predicted, next, widened);
 }
 
 }  // namespace
-
-bool sameStair(const StairEdge& a, const StairEdge& b, const LandmarkParams& params) {
-    if (std::abs(a.centre().z() - b.centre().z()) > params.match_height_m) return false;
-    const double dist = 0.5 * (lineDistanceXy(a, b.centre()) + lineDistanceXy(b, a.centre()));
-    if (dist > params.match_distance_m) return false;
-    double dalpha = std::abs(a.orientationRad() - b.orientationRad());
-    dalpha = std::min(dalpha, M_PI - dalpha);
-    if (dalpha > params.match_angle_deg * kDegToRad) return false;
-    const double needed =
-        std::min(params.min_edge_overlap_m, 0.5 * std::min(a.length(), b.length()));
-    return overlapAlong(a, b) >= needed;
-}
 
 bool headingsAgree(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
     return angleDiff(a.heading_rad, b.heading_rad) <= params.heading_tolerance_deg * kDegToRad;
@@ -140,11 +111,7 @@ bool footprintsOverlap(const Staircase& a, const Staircase& b, const LandmarkPar
 
 bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams& params) {
     if (a.steps.empty() || b.steps.empty() || !headingsAgree(a, b, params)) return false;
-    for (const StairEdge& ea : a.steps) {
-        for (const StairEdge& eb : b.steps) {
-            if (sameStair(ea, eb, params)) return true;
-        }
-    }
+    if (haveCommonStair(a, b, toMergeParams(params))) return true;
     if (params.use_footprint && footprintsOverlap(a, b, params)) return true;
     return params.max_extrapolated_steps > 0 &&
            (continuesFlight(a, b, params) || continuesFlight(b, a, params));

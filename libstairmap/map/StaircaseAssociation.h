@@ -1,6 +1,7 @@
 #pragma once
 // Deciding whether two canonical world-frame staircases are the same flight, and how their steps
-// line up. Inputs must be canonical (map/StaircaseCanonical.h).
+// line up. Inputs must be canonical (core/StaircaseCanonical.h). Step pairs use the core
+// Definition 2 (core/StairEdgeFusion.h: isSameStairEdge with toMergeParams(params)).
 
 #include <vector>
 
@@ -8,11 +9,6 @@
 #include "map/LandmarkParams.h"
 
 namespace stairmap {
-
-/// Definition 2 ("same stair"), with the xy distance taken between the LINES (perpendicular
-/// distance, symmetric mean), plus an overlap along the edge so that collinear edges of
-/// side-by-side flights stay apart.
-bool sameStair(const StairEdge& a, const StairEdge& b, const LandmarkParams& params);
 
 /// Uphill headings agree within params.heading_tolerance_deg.
 bool headingsAgree(const Staircase& a, const Staircase& b, const LandmarkParams& params);
@@ -22,7 +18,8 @@ bool headingsAgree(const Staircase& a, const Staircase& b, const LandmarkParams&
 /// [lowest edge - rise, highest edge] overlap by params.footprint_min_z_overlap_m.
 bool footprintsOverlap(const Staircase& a, const Staircase& b, const LandmarkParams& params);
 
-/// Headings agree and (some step pair is the same stair, or footprints overlap when enabled, or
+/// Headings agree and (some step pair is the same stair: core haveCommonStair, Algorithm 2's
+/// match test; or footprints overlap when enabled; or
 /// one continues the other along the flight, see LandmarkParams::max_extrapolated_steps).
 bool sameStaircase(const Staircase& a, const Staircase& b, const LandmarkParams& params);
 

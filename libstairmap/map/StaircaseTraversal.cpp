@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/StaircaseCanonical.h"
 #include "map/FloorLevels.h"
-#include "map/StaircaseCanonical.h"
 
 namespace stairmap {
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "map/LandmarkMap.h"
-#include "SyntheticStairs.h"
+#include "core/SyntheticStairs.h"
 
 namespace stairmap {
 namespace {

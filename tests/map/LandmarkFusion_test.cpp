@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "map/LandmarkMap.h"
-#include "map/StaircaseCanonical.h"
-#include "SyntheticStairs.h"
+#include "core/StaircaseCanonical.h"
+#include "core/SyntheticStairs.h"
 
 namespace stairmap {
 namespace {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "map/LandmarkMap.h"
-#include "map/StaircaseCanonical.h"
-#include "SyntheticStairs.h"
+#include "core/StaircaseCanonical.h"
+#include "core/SyntheticStairs.h"
 
 namespace stairmap {
 namespace {

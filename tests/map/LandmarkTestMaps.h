@@ -10,7 +10,7 @@
 #include <string>
 
 #include "map/LandmarkMap.h"
-#include "SyntheticStairs.h"
+#include "core/SyntheticStairs.h"
 
 namespace stairmap::test {
 

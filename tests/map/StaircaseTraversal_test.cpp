@@ -7,9 +7,9 @@
 #include "io/LandmarkJson.h"
 #include "LandmarkTestMaps.h"
 #include "map/LandmarkMap.h"
-#include "map/StaircaseCanonical.h"
+#include "core/StaircaseCanonical.h"
 #include "map/StaircaseTraversal.h"
-#include "SyntheticStairs.h"
+#include "core/SyntheticStairs.h"
 
 namespace stairmap {
 namespace {

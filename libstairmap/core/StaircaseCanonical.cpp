@@ -1,4 +1,4 @@
-#include "map/StaircaseCanonical.h"
+#include "core/StaircaseCanonical.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,6 @@
 #pragma once
-// The landmark map's canonical staircase form and its geometry, computed from the step edges.
+// Canonical staircase form, whichever end a flight was seen from, and its geometry computed from
+// the step edges. The landmark map stores flights in it; core/StaircaseMerge merges in it.
 
 #include <optional>
 
@@ -9,8 +10,8 @@ namespace stairmap {
 
 /// Canonical form of a staircase seen from either end: direction Ascending, steps sorted bottom to
 /// top by height, heading = uphill, each edge's start on the left and end on the right when
-/// facing uphill (the convention of core/Staircase.h), geometry re-estimated (see updateCanonicalGeometry). Returns nullopt for a
-/// staircase with no steps or non-finite coordinates.
+/// facing uphill (the convention of core/Staircase.h), geometry re-estimated (see
+/// updateCanonicalGeometry). Returns nullopt for a staircase with no steps or non-finite coordinates.
 std::optional<Staircase> canonicalStaircase(const Staircase& staircase);
 
 /// Re-estimates the geometry of a canonical staircase from its edges (paper Sec. III-C):
