@@ -125,7 +125,11 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
         std::sort(lines.begin(), lines.end(),
                   [](const LineSegment& a, const LineSegment& b) { return a.z < b.z; });
     }
-    for (const auto& chain : searchStaircases(lines, floor_z, p.floor_tolerance_m, p)) {
+    // A descending flight's first edge is the floor's own nosing, found after the search: the
+    // search may stop one edge short of min_steps, and the flight counts once that edge is added.
+    DetectorParams search = p;
+    if (!up) search.min_steps = std::max(2, p.min_steps - 1);
+    for (const auto& chain : searchStaircases(lines, floor_z, p.floor_tolerance_m, search)) {
         std::vector<LineSegment> edges;
         for (int idx : chain) {
             edges.push_back(lines[idx]);
@@ -134,6 +138,7 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
         // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
         if (p.edge_height_tolerance_m > 0) raiseLowEdges(edges, kRiserHitMinDrop);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
+        if (static_cast<int>(edges.size()) < p.min_steps) continue;
         out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }
 }
