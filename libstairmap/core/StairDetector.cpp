@@ -5,6 +5,7 @@
 
 #include "core/CylindricalRows.h"
 #include "core/FloorEstimation.h"
+#include "core/FlightJoin.h"
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
 #include "core/RiserHits.h"
@@ -195,6 +196,10 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
     if (params_.detect_descending)
         detectDirection(cells, StairDirection::Descending, floor, params_, result.staircases);
     mergeSplitFlights(result.staircases, 0);
+    FlightJoinParams jp;
+    jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
+    jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);
+    joinContinuedFlights(result.staircases, jp);
     return result;
 }
 

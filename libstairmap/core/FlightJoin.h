@@ -1,0 +1,27 @@
+#pragma once
+// Algorithm 1 can return one flight as two chains, the second continuing the first where an edge
+// read wrong (debris on a tread, a riser hit) broke the chain. Two same-direction staircases of
+// one detection are such a pair when the second starts within a few runs beyond the first's last
+// edge, along its heading and over the same width. Then either the second's edges lie on the
+// first's nosing line (consecutive steps within the height tolerance) and they are appended, or
+// they do not and the second is dropped as a corrupted view of the flight's far part: the first
+// chain starts one rise from the robot's floor, so it is the anchored one.
+
+#include <vector>
+
+#include "core/Staircase.h"
+
+namespace stairmap {
+
+struct FlightJoinParams {
+    double max_heading_diff_deg = 15.0;  ///< [deg] the two headings agree within this
+    double max_gap_runs = 2.5;           ///< [-] the second starts at most this many runs beyond
+    double min_lateral_overlap = 0.5;    ///< [-] facing edges overlap by this fraction of the shorter
+    double height_tolerance_m = 0.04;    ///< [m] appended edges lie this close to the nosing line
+};
+
+/// Joins or drops continuing chains in `found` (robot frame, steps ordered outward from the
+/// robot's floor). Returns how many staircases were removed. O(n^2 k) for n staircases of k steps.
+int joinContinuedFlights(std::vector<Staircase>& found, const FlightJoinParams& params);
+
+}  // namespace stairmap

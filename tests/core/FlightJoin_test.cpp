@@ -1,0 +1,58 @@
+// Two chains of one flight are joined (consistent) or the far one dropped (corrupted); separate
+// flights stay separate.
+#include <gtest/gtest.h>
+
+#include "core/FlightJoin.h"
+#include "core/StaircaseGeometry.h"
+
+namespace stairmap {
+namespace {
+
+constexpr double kRise = 0.17, kRun = 0.28, kWidth = 1.2;
+
+/// Ascending flight along +x: steps first..last (step k: nosing at x0 + k run, z0 + k rise),
+/// lateral centre y_c, optional extra height on every edge.
+Staircase flight(int first, int last, double y_c = 0.0, double x0 = 1.5, double dz = 0.0) {
+    Staircase s;
+    s.direction = StairDirection::Ascending;
+    for (int k = first; k <= last; ++k) {
+        StairEdge e;
+        const double x = x0 + k * kRun, z = -0.33 + k * kRise + dz;
+        e.start = {x, y_c + kWidth / 2, z};
+        e.end = {x, y_c - kWidth / 2, z};
+        s.steps.push_back(e);
+    }
+    estimateGeometry(s);
+    return s;
+}
+
+TEST(FlightJoin, AConsistentContinuationIsAppended) {
+    std::vector<Staircase> found = {flight(4, 6), flight(0, 3)};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].steps.size(), 7u);
+    EXPECT_NEAR(found[0].step_height, kRise, 1e-9);
+    EXPECT_NEAR(found[0].step_depth, kRun, 1e-9);
+    EXPECT_NEAR(found[0].location.x(), 1.5, 1e-9);  // still the first step's edge
+}
+
+TEST(FlightJoin, ACorruptedContinuationIsDroppedAndTheAnchoredChainKept) {
+    std::vector<Staircase> found = {flight(0, 3), flight(4, 8, 0.0, 1.5, 0.09)};  // 9 cm too high
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].steps.size(), 4u);
+    EXPECT_NEAR(found[0].steps.front().centre().z(), -0.33, 1e-9);
+}
+
+TEST(FlightJoin, SeparateFlightsStaySeparate) {
+    // side by side (no lateral overlap), beyond a 1.5 m landing, and one descending
+    std::vector<Staircase> found = {flight(0, 4), flight(0, 4, 2.0), flight(5, 8, 0.0, 3.0)};
+    Staircase down = flight(0, 4, 0.0, -1.5);
+    down.direction = StairDirection::Descending;
+    found.push_back(down);
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 0);
+    EXPECT_EQ(found.size(), 4u);
+}
+
+}  // namespace
+}  // namespace stairmap
