@@ -95,6 +95,10 @@ void loadRobotRuns(const IniFieldReader& ini, sim::SimulationConfig& config) {
         run.drift.z_std_per_m = ini.getDouble(section, "drift_z_std_per_m", 0.0);
         run.drift.yaw_std_deg_per_m = ini.getDouble(section, "drift_yaw_std_deg_per_m", 0.0);
         run.drift.seed = static_cast<unsigned>(ini.getInt(section, "drift_seed", 1));
+        run.sway.tilt_std_deg = ini.getDouble(section, "sway_tilt_deg", 0.0);
+        run.sway.seed = static_cast<unsigned>(ini.getInt(section, "sway_seed", 1));
+        if (!(run.sway.tilt_std_deg >= 0 && run.sway.tilt_std_deg <= 10))
+            ini.fail(section, "sway_tilt_deg", "must be in [0, 10] deg");
         if (run.drift.xy_std_per_m < 0 || run.drift.z_std_per_m < 0 || run.drift.yaw_std_deg_per_m < 0)
             ini.fail(section, "drift_*", "drift standard deviations must be >= 0");
         checked(ini, section, [&] { sim::validate(t); });

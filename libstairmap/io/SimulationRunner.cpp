@@ -41,6 +41,7 @@ nlohmann::json runRobot(const sim::SimulationConfig& config, const sim::RobotRun
                         const fs::path& dir, const SimulationRunOptions& options,
                         SimulationRunSummary& summary, unsigned seed) {
     auto samples = sim::sampleTrajectory(run.trajectory);
+    sim::applySway(samples, run.sway);
     sim::applyDrift(samples, run.drift);
     const std::string prefix = single ? "" : run.name + "_";
     const fs::path rawlog = dir / (run.name + ".rawlog");

@@ -25,6 +25,7 @@ struct RobotRun {
     std::string name = "robot";
     TrajectoryParams trajectory;
     DriftParams drift;
+    SwayParams sway;
     /// The robot's own sensor (robots of one scene may differ, e.g. a level LiDAR on a wheeled
     /// robot and a pitched one on a legged robot); the loader fills it from [sensor] by default.
     MountedSensor mounted;

@@ -82,9 +82,12 @@ TEST(SimSceneIni, NegativesSceneHoldsEveryPartAndNoStaircase) {
                                "[r]\ntype = ramp\nramp_slope_deg = 8\n"
                                "[c]\ntype = curb\norigin_x_m = 10\n"
                                "[trajectory]\nwaypoints = -2 0 0; 12 0 0\nquantum_m = 0.0078125\n"
-                               "sort_points = true\n");
+                               "sort_points = true\nsway_tilt_deg = 1.5\nsway_seed = 9\n");
     const auto config = loadSimulationConfig(path);
     EXPECT_EQ(config.kind, "negative");
+    ASSERT_EQ(config.robots.size(), 1u);
+    EXPECT_DOUBLE_EQ(config.robots[0].sway.tilt_std_deg, 1.5);
+    EXPECT_EQ(config.robots[0].sway.seed, 9u);
     EXPECT_TRUE(config.scene.truth().staircases.empty());
     // The ramp adds its slab, top platform and floor; the curb its box and floor: 5 solids.
     EXPECT_EQ(config.scene.primitives().size(), 5u);
@@ -131,6 +134,8 @@ TEST(SimSceneIni, BadValuesNameFileSectionAndKey) {
     expectError("[scene]\ntype = ascending\n" + clouds + "quantum_m = 0.5\n", "quantum_m");
     expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0; 1 0 0\nquantum_m = 0\n",
                 "[trajectory] quantum_m");
+    expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0; 1 0 0\nsway_tilt_deg = 20\n",
+                "[trajectory] sway_tilt_deg");
     expectError("[scene]\ntype = negatives\n" + clouds, "[negatives] parts");
     expectError("[scene]\ntype = negatives\n[negatives]\nparts = p\n[p]\ntype = stairs\n" + clouds,
                 "[p] type");
