@@ -1,6 +1,6 @@
 // `stairmap eval`: scores staircase detections against simulated ground truth (paper Tables I/II).
 //   stairmap eval --detect datasets/clouds          run the detector on every cloud with a .gt.json
-//   stairmap eval DET.json... [--gt gt.json]         score `stairmap detect` outputs / a landmarks.json
+//   stairmap eval DET.json... [--gt gt.json]...      score `stairmap detect` outputs / landmarks.json maps
 // Matching rule and table columns: core/Evaluation.h and docs/simulator.md.
 
 #include <chrono>
