@@ -85,7 +85,8 @@ int runEval(const EvalOptions& options) {
     } else {
         io::DetectionLoadOptions load;
         load.confirmed_only = options.confirmed_only;
-        for (const auto& [file, gt] : io::pairDetectionFilesWithTruth(options.inputs, options.gt_paths))
+        const auto pairs = io::pairDetectionFilesWithTruth(options.inputs, options.gt_paths);
+        for (const auto& [file, gt] : pairs)
             samples.push_back(io::loadDetectionSample(file, gt, load));
     }
     if (samples.empty()) throw std::runtime_error("no inputs with ground truth found");

@@ -40,7 +40,8 @@ PointCloud readStreamFormat(const std::string& path, CloudFileFormat format) {
     try {
         if (!isGzippedCloudPath(path)) return readFormat(in, format);
         // .pcd.gz etc.: inflate the whole file in memory, then parse it like the plain format.
-        const std::string compressed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        const std::string compressed{std::istreambuf_iterator<char>(in),
+                                     std::istreambuf_iterator<char>()};
         if (in.bad()) throw std::runtime_error("read error");
         std::istringstream plain(gunzipBuffer(compressed), std::ios::binary);
         return readFormat(plain, format);
@@ -54,7 +55,8 @@ PointCloud readStreamFormat(const std::string& path, CloudFileFormat format) {
 PointCloud readCloudFile(const std::string& path) {
     const CloudFileFormat format = cloudFileFormatOf(path);
     if (format == CloudFileFormat::Unknown) {
-        throw std::runtime_error(path + ": unknown point-cloud file extension (expected .xyz, .pcd, .ply (each optionally .gz) or .rawlog)");
+        throw std::runtime_error(path + ": unknown point-cloud file extension (expected .xyz, .pcd, "
+                                        ".ply (each optionally .gz) or .rawlog)");
     }
     checkReadableFile(path);
     if (format == CloudFileFormat::Rawlog) return readRawlogCloud(path);

@@ -24,7 +24,8 @@ void writeFormat(std::ostream& out, const PointCloud& cloud, CloudFileFormat for
 void writeCloudFile(const std::string& path, const PointCloud& cloud, CloudFileEncoding encoding) {
     const CloudFileFormat format = cloudFileFormatOf(path);
     if (format == CloudFileFormat::Rawlog || format == CloudFileFormat::Unknown) {
-        throw std::runtime_error(path + ": cannot write this format (expected .xyz, .pcd or .ply, each optionally .gz)");
+        throw std::runtime_error(path + ": cannot write this format (expected .xyz, .pcd or .ply, "
+                                        "each optionally .gz)");
     }
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error(path + ": cannot be opened for writing");

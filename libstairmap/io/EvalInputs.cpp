@@ -75,7 +75,8 @@ std::vector<std::string> findCloudsWithTruth(const std::vector<std::string>& inp
         return isCloud(p) && fs::exists(truthPathFor(p.string()));
     });
     for (const auto& c : clouds) {
-        if (!isCloud(c)) throw std::runtime_error(c + ": not a cloud file (.pcd, .ply, .xyz, each optionally .gz)");
+        if (!isCloud(c))
+            throw std::runtime_error(c + ": not a cloud file (.pcd, .ply, .xyz, each optionally .gz)");
         if (!fs::exists(truthPathFor(c))) throw std::runtime_error(c + ": no ground truth " + truthPathFor(c));
     }
     return clouds;

@@ -17,7 +17,8 @@ namespace stairmap::io {
 /// that are not *.gt.json), sorted by name.
 std::vector<std::string> findDetectionFiles(const std::vector<std::string>& inputs);
 
-/// Clouds (*.pcd, *.ply, *.xyz, each optionally gzipped: *.pcd.gz ...) in `inputs` that have a sibling <stem>.gt.json, sorted by name.
+/// Clouds (*.pcd, *.ply, *.xyz, each optionally gzipped: *.pcd.gz ...) in `inputs` that have a
+/// sibling <stem>.gt.json, sorted by name.
 /// Throws std::runtime_error naming an input that does not exist or a cloud without truth.
 std::vector<std::string> findCloudsWithTruth(const std::vector<std::string>& inputs);
 
