@@ -17,6 +17,7 @@ std::string zlibMessage(const z_stream& z, int code) {
 
 std::string gzipBuffer(const std::string& data, int level) {
     if (level < 1 || level > 9) throw std::invalid_argument("gzip level must be 1..9");
+    if (data.size() > kMaxGunzipBytes) throw std::runtime_error("too large to gzip in one buffer");
     z_stream z{};
     if (deflateInit2(&z, level, Z_DEFLATED, kGzipWindowBits, 8, Z_DEFAULT_STRATEGY) != Z_OK)
         throw std::runtime_error("zlib deflateInit2 failed");
@@ -37,6 +38,8 @@ std::string gunzipBuffer(const std::string& compressed, std::size_t max_bytes) {
     if (compressed.size() < 2 || static_cast<unsigned char>(compressed[0]) != 0x1f ||
         static_cast<unsigned char>(compressed[1]) != 0x8b)
         throw std::runtime_error("not gzip data (no gzip signature 1f 8b)");
+    if (compressed.size() > kMaxGunzipBytes)  // zlib counts input in 32-bit words
+        throw std::runtime_error("compressed data larger than " + std::to_string(kMaxGunzipBytes) + " bytes");
     z_stream z{};
     if (inflateInit2(&z, kGzipWindowBits) != Z_OK) throw std::runtime_error("zlib inflateInit2 failed");
     z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
