@@ -11,7 +11,7 @@ DEB_PACKAGES := cmake make g++ \
 	libmrpt-obs-dev libmrpt-maps-dev libmrpt-io-dev libmrpt-config-dev libmrpt-poses-dev \
 	libmrpt-system-dev libmrpt-serialization-dev libmrpt-opengl-dev libmrpt-img-dev \
 	liboctomap-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-	nlohmann-json3-dev libcli11-dev
+	nlohmann-json3-dev libcli11-dev zlib1g-dev
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
@@ -43,7 +43,7 @@ demo: build
 	$(STAIRMAP) map datasets/two_floor/two_floor.rawlog --poses datasets/two_floor/poses.tum \
 	  --config config/sim_legged_vlp16.ini --out $(DEMO_OUT)/two_floor
 	@echo "stairmap: demo outputs in $(DEMO_OUT)/two_floor (landmarks.json, map.bt, scene.3Dscene, overview.png, ...)"
-	$(STAIRMAP) detect datasets/clouds/ascending_0.pcd --robot-height 0.35
+	$(STAIRMAP) detect datasets/clouds/ascending_0.pcd.gz --robot-height 0.35
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

@@ -25,8 +25,9 @@ constexpr double kMaxRobotHeightM = 100.0;  // anything taller is a typo, not a 
 const char* kDetectHelp =
     "Detect ascending and descending staircases in one point cloud and print them as JSON.\n"
     "\n"
-    "Input: .xyz (ASCII x y z per line), .pcd (ascii/binary), .ply (ascii/binary_little_endian)\n"
-    "or an MRPT .rawlog (its first 3D observation, converted to the robot frame via sensorPose).\n"
+    "Input: .xyz (ASCII x y z per line), .pcd (ascii/binary), .ply (ascii/binary_little_endian),\n"
+    "each also gzipped (.xyz.gz, .pcd.gz, .ply.gz), or an MRPT .rawlog (its first 3D\n"
+    "observation, converted to the robot frame via sensorPose).\n"
     "The cloud must be in a gravity-aligned robot frame in metres: x forward, y left, z up,\n"
     "origin at the robot body; the floor the robot stands on is at z = -H.\n"
     "Floor height: --robot-height H, else robot_height_m of the config's [detector] section,\n"
@@ -109,7 +110,7 @@ Command addDetectCommand(CLI::App& app) {
     Command command;
     command.cli = app.add_subcommand("detect", "Detect staircases in one point cloud (prints JSON)");
     command.cli->footer(kDetectHelp);
-    command.cli->add_option("CLOUD", options->cloud_path, "Point cloud: .xyz, .pcd, .ply or .rawlog")
+    command.cli->add_option("CLOUD", options->cloud_path, "Point cloud: .xyz, .pcd, .ply (each optionally .gz) or .rawlog")
         ->required();
     command.cli->add_option("--robot-height", options->robot_height_m,
                             "[m] height of the robot frame origin above the floor it stands on (floor z = -H)");

@@ -1,6 +1,6 @@
 // `stairmap eval`: scores staircase detections against simulated ground truth (paper Tables I/II).
 //   stairmap eval --detect datasets/clouds          run the detector on every cloud with a .gt.json
-//   stairmap eval DET.json... [--gt gt.json]         score `stairmap detect` outputs / a landmarks.json
+//   stairmap eval DET.json... [--gt gt.json]...      score `stairmap detect` outputs / landmarks.json maps
 // Matching rule and table columns: core/Evaluation.h and docs/simulator.md.
 
 #include <chrono>
@@ -24,11 +24,13 @@ namespace stairmap::apps {
 namespace {
 
 const char* kEvalHelp =
-    "Inputs are files or directories. With --detect they are clouds (.pcd/.ply/.xyz) each with a\n"
+    "Inputs are files or directories. With --detect they are clouds (.pcd/.ply/.xyz, or .gz) with a\n"
     "<stem>.gt.json next to it (directories: every such cloud); the detector runs on each (floor\n"
     "height from the truth unless --estimate-floor) and its run time is reported. Without --detect\n"
     "they are detection JSON files (the output of `stairmap detect`, or a landmarks.json from\n"
-    "`stairmap map`), each scored against <stem>.gt.json next to it or against --gt.\n"
+    "`stairmap map`), each scored against <stem>.gt.json next to it or against --gt (one --gt for\n"
+    "all inputs, or one per input: `eval a/landmarks.json b/landmarks.json --gt A/gt.json --gt\n"
+    "B/gt.json` scores several maps into one table; a map's time/det comes from its stats.json).\n"
     "A detection matches a true staircase of the same direction-as-seen when the median horizontal\n"
     "distance of its edge centres to the nearest true nosing is < --max-xy and the median vertical\n"
     "distance < --max-z; each truth is matched at most once; other detections are false positives.\n"
@@ -36,7 +38,8 @@ const char* kEvalHelp =
 
 struct EvalOptions {
     std::vector<std::string> inputs;
-    std::optional<std::string> gt_path;
+    std::vector<std::string> gt_paths;
+    bool confirmed_only = false;
     bool run_detector = false;
     bool estimate_floor = false;
     std::string config_path;
@@ -80,8 +83,11 @@ int runEval(const EvalOptions& options) {
     if (options.run_detector) {
         samples = detectSamples(options);
     } else {
-        for (const auto& file : io::findDetectionFiles(options.inputs))
-            samples.push_back(io::loadDetectionSample(file, options.gt_path));
+        io::DetectionLoadOptions load;
+        load.confirmed_only = options.confirmed_only;
+        const auto pairs = io::pairDetectionFilesWithTruth(options.inputs, options.gt_paths);
+        for (const auto& [file, gt] : pairs)
+            samples.push_back(io::loadDetectionSample(file, gt, load));
     }
     if (samples.empty()) throw std::runtime_error("no inputs with ground truth found");
     const auto report = evaluate(samples, options.params);
@@ -108,7 +114,12 @@ Command addEvalCommand(CLI::App& app) {
     command.cli->add_option("inputs", options->inputs, "Detection JSONs, clouds (--detect) or directories")
         ->required();
     command.cli->add_flag("--detect", options->run_detector, "Run the detector on clouds first");
-    command.cli->add_option("--gt", options->gt_path, "Ground truth for every input (default: <stem>.gt.json)");
+    command.cli->add_option("--gt", options->gt_paths,
+                            "Ground truth: once for every input, or once per input in the same order "
+                            "(several maps in one table); default <stem>.gt.json")
+        ->allow_extra_args(false);
+    command.cli->add_flag("--confirmed-only", options->confirmed_only,
+                          "Landmark maps: score confirmed landmarks only");
     command.cli->add_flag("--estimate-floor", options->estimate_floor,
                           "--detect: let the detector estimate the floor instead of using the truth's");
     command.cli->add_option("--config", options->config_path, "INI file with a [detector] section");

@@ -22,8 +22,8 @@ const char* kSimHelp =
     "    poses.tum (poses handed to the mapper, with drift), gt_trajectory.tum (true poses),\n"
     "    gt.json (world frame: every staircase's nosings, rise, run, width; floor heights);\n"
     "    several robots: <robot>.rawlog, <robot>_poses.tum, <robot>_gt_trajectory.tum.\n"
-    "  clouds ([clouds] poses): <name>_<i>.pcd (robot frame, accumulated scans) and\n"
-    "    <name>_<i>.gt.json (ground truth in the same robot frame).\n"
+    "  clouds ([clouds] poses): <name>_<i>.<format> (pcd, ply, xyz, optionally .gz; robot\n"
+    "    frame, accumulated scans) and <name>_<i>.gt.json (truth in the same robot frame).\n"
     "Exit status: 0 on success, 2 on a bad scene file or option (one line on stderr).";
 
 struct SimOptions {

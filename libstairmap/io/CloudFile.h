@@ -28,12 +28,15 @@ enum class CloudFileEncoding {
 ///   .xyz    ASCII "x y z" per line; extra columns ignored; '#' comments and blank lines skipped.
 ///   .pcd    DATA ascii or binary (binary_compressed is rejected); any FIELDS containing x y z.
 ///   .ply    ascii or binary_little_endian (big-endian rejected); the `vertex` element's x y z.
+///   .xyz.gz, .pcd.gz, .ply.gz  one gzip member holding that format (inflated in memory, then
+///           parsed as above; a plain, truncated or corrupt gzip stream is an error).
 ///   .rawlog MRPT rawlog (plain or gzipped) holding 3D observations: the FIRST observation that
 ///           converts to points is used (later ones are ignored), in the robot frame.
 /// Throws std::runtime_error("<path>: <problem>") on a missing/unreadable/malformed file.
 PointCloud readCloudFile(const std::string& path);
 
-/// Writes `.xyz`, `.pcd` or `.ply` (chosen by extension) with float32 coordinates. XYZ is always
+/// Writes `.xyz`, `.pcd` or `.ply` (chosen by extension; a further `.gz` gzips the file
+/// reproducibly, see io/GzipBuffer.h) with float32 coordinates. XYZ is always
 /// ASCII (the format has no binary variant). ASCII output uses 9 significant digits, so float
 /// values round-trip exactly. Throws std::runtime_error("<path>: <problem>") if the extension is
 /// unknown or the file cannot be written.

@@ -2,10 +2,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 #include "io/CloudFile.h"
 #include "io/CloudFileFormat.h"
+#include "io/GzipBuffer.h"
 
 namespace stairmap::io {
 
@@ -23,15 +26,25 @@ void checkReadableFile(const std::string& path) {
     if (size == 0) throw std::runtime_error(path + ": file is empty");
 }
 
+PointCloud readFormat(std::istream& in, CloudFileFormat format) {
+    switch (format) {
+        case CloudFileFormat::Xyz: return readXyz(in);
+        case CloudFileFormat::Pcd: return readPcd(in);
+        default: return readPly(in);
+    }
+}
+
 PointCloud readStreamFormat(const std::string& path, CloudFileFormat format) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot be opened for reading");
     try {
-        switch (format) {
-            case CloudFileFormat::Xyz: return readXyz(in);
-            case CloudFileFormat::Pcd: return readPcd(in);
-            default: return readPly(in);
-        }
+        if (!isGzippedCloudPath(path)) return readFormat(in, format);
+        // .pcd.gz etc.: inflate the whole file in memory, then parse it like the plain format.
+        const std::string compressed{std::istreambuf_iterator<char>(in),
+                                     std::istreambuf_iterator<char>()};
+        if (in.bad()) throw std::runtime_error("read error");
+        std::istringstream plain(gunzipBuffer(compressed), std::ios::binary);
+        return readFormat(plain, format);
     } catch (const std::exception& e) {
         throw std::runtime_error(path + ": " + e.what());
     }
@@ -42,7 +55,8 @@ PointCloud readStreamFormat(const std::string& path, CloudFileFormat format) {
 PointCloud readCloudFile(const std::string& path) {
     const CloudFileFormat format = cloudFileFormatOf(path);
     if (format == CloudFileFormat::Unknown) {
-        throw std::runtime_error(path + ": unknown point-cloud file extension (expected .xyz, .pcd, .ply or .rawlog)");
+        throw std::runtime_error(path + ": unknown point-cloud file extension (expected .xyz, .pcd, "
+                                        ".ply (each optionally .gz) or .rawlog)");
     }
     checkReadableFile(path);
     if (format == CloudFileFormat::Rawlog) return readRawlogCloud(path);

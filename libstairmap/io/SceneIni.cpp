@@ -1,5 +1,7 @@
 #include "io/SceneIni.h"
 
+#include <sstream>
+
 #include "io/IniFile.h"
 #include "io/SceneIniParts.h"
 #include "sim/BuildingGenerator.h"
@@ -78,8 +80,8 @@ void buildBuilding(const IniFieldReader& ini, sim::SimulationConfig& config) {
     checked(ini, s, [&] { sim::addTwoFloorBuilding(config.scene, p); });
 }
 
-void buildNegative(const IniFieldReader& ini, const std::string& type, sim::SimulationConfig& config) {
-    const std::string s = "negative";
+void buildNegative(const IniFieldReader& ini, const std::string& type, sim::SimulationConfig& config,
+                   const std::string& s = "negative") {
     sim::NegativeParams p;
     p.type = type;
     p.origin = readOrigin(ini, s, "origin");
@@ -97,6 +99,22 @@ void buildNegative(const IniFieldReader& ini, const std::string& type, sim::Simu
     checked(ini, s, [&] { sim::addNegative(config.scene, p); });
 }
 
+/// type = negatives: several negatives in one scene (a robot walks past them). [negatives]
+/// parts = <section> ...; each part section has `type` (room, ramp, curb, stage, bleachers) and
+/// the [negative] keys (origin_*_m, heading_deg, ...).
+void buildNegatives(const IniFieldReader& ini, sim::SimulationConfig& config) {
+    std::istringstream names(ini.getString("negatives", "parts", ""));
+    int count = 0;
+    for (std::string part; names >> part; ++count) {
+        const std::string type = ini.getString(part, "type", "");
+        if (type == "room" || type == "ramp" || type == "curb" || type == "stage" || type == "bleachers")
+            buildNegative(ini, type, config, part);
+        else
+            ini.fail(part, "type", "'" + type + "' is not a negative (room, ramp, curb, stage, bleachers)");
+    }
+    if (count == 0) ini.fail("negatives", "parts", "missing (names of the sections of the parts)");
+}
+
 void buildScene(const IniFieldReader& ini, const std::string& type, sim::SimulationConfig& config) {
     if (type == "ascending" || type == "descending" || type == "hollow" || type == "debris") {
         buildStraight(ini, *stairKindFromName(type), config);
@@ -111,9 +129,12 @@ void buildScene(const IniFieldReader& ini, const std::string& type, sim::Simulat
                type == "bleachers") {
         buildNegative(ini, type, config);
         config.kind = "negative";
+    } else if (type == "negatives") {
+        buildNegatives(ini, config);
+        config.kind = "negative";
     } else {
         ini.fail("scene", "type", "'" + type + "' is unknown (ascending, descending, hollow, debris, "
-                 "spiral, two_floor_building, room, ramp, curb, stage, bleachers)");
+                 "spiral, two_floor_building, room, ramp, curb, stage, bleachers, negatives)");
     }
 }
 }  // namespace

@@ -69,6 +69,10 @@ void loadRobotRuns(const IniFieldReader& ini, sim::SimulationConfig& config) {
     } else if (ini.has("trajectory", "waypoints")) {
         sections.push_back("trajectory");
     }
+    config.rawlog_quantum_m = ini.getDouble("trajectory", "quantum_m", config.rawlog_quantum_m);
+    if (!(config.rawlog_quantum_m > 0 && config.rawlog_quantum_m <= 0.05))
+        ini.fail("trajectory", "quantum_m", "must be in (0, 0.05] m");
+    config.rawlog_sort_points = ini.getBool("trajectory", "sort_points", config.rawlog_sort_points);
     for (const auto& section : sections) {
         sim::RobotRun run;
         run.name = section == "trajectory" ? config.name : section;
@@ -91,6 +95,10 @@ void loadRobotRuns(const IniFieldReader& ini, sim::SimulationConfig& config) {
         run.drift.z_std_per_m = ini.getDouble(section, "drift_z_std_per_m", 0.0);
         run.drift.yaw_std_deg_per_m = ini.getDouble(section, "drift_yaw_std_deg_per_m", 0.0);
         run.drift.seed = static_cast<unsigned>(ini.getInt(section, "drift_seed", 1));
+        run.sway.tilt_std_deg = ini.getDouble(section, "sway_tilt_deg", 0.0);
+        run.sway.seed = static_cast<unsigned>(ini.getInt(section, "sway_seed", 1));
+        if (!(run.sway.tilt_std_deg >= 0 && run.sway.tilt_std_deg <= 10))
+            ini.fail(section, "sway_tilt_deg", "must be in [0, 10] deg");
         if (run.drift.xy_std_per_m < 0 || run.drift.z_std_per_m < 0 || run.drift.yaw_std_deg_per_m < 0)
             ini.fail(section, "drift_*", "drift standard deviations must be >= 0");
         checked(ini, section, [&] { sim::validate(t); });
@@ -108,10 +116,14 @@ void loadCloudSection(const IniFieldReader& ini, sim::SimulationConfig& config) 
     c.jitter_xy_m = ini.getDouble(s, "jitter_xy_m", c.jitter_xy_m);
     c.jitter_yaw_deg = ini.getDouble(s, "jitter_yaw_deg", c.jitter_yaw_deg);
     c.jitter_tilt_deg = ini.getDouble(s, "jitter_tilt_deg", c.jitter_tilt_deg);
+    c.quantum_m = ini.getDouble(s, "quantum_m", c.quantum_m);
+    c.sort_points = ini.getBool(s, "sort_points", c.sort_points);
     checked(ini, s, [&] { sim::validate(c); });
     config.cloud_extension = ini.getString(s, "format", "pcd");
-    if (config.cloud_extension != "pcd" && config.cloud_extension != "ply" && config.cloud_extension != "xyz")
-        ini.fail(s, "format", "must be pcd, ply or xyz");
+    const std::string& e = config.cloud_extension;
+    const std::string plain = e.size() > 3 && e.compare(e.size() - 3, 3, ".gz") == 0 ? e.substr(0, e.size() - 3) : e;
+    if (plain != "pcd" && plain != "ply" && plain != "xyz")
+        ini.fail(s, "format", "must be pcd, ply or xyz, optionally gzipped (pcd.gz, ply.gz, xyz.gz)");
     config.cloud_first_index = ini.getInt(s, "first_index", 0);
 }
 

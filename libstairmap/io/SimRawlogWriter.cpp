@@ -14,19 +14,21 @@
 namespace stairmap::io {
 
 namespace {
-/// Rounds to a multiple of 2^-9 m (~2 mm, below a VLP-16's range resolution). The float then has
-/// its low mantissa bits zero, which lets gzip shrink the rawlog by about a third.
-float quantize(float v) { return std::round(v * 512.0f) / 512.0f; }
+/// Rounds to a multiple of `quantum`. The float then has its low mantissa bits zero, which lets
+/// gzip shrink the rawlog by about a third (2^-9 m) or more (2^-8 m: another ~15 %).
+float quantize(float v, float quantum) { return std::round(v / quantum) * quantum; }
 }  // namespace
 
 struct SimRawlogWriter::Impl {
     mrpt::io::CFileGZOutputStream file;
 };
 
-SimRawlogWriter::SimRawlogWriter(const std::string& path, int gzip_level)
-    : impl_(std::make_unique<Impl>()), path_(path) {
+SimRawlogWriter::SimRawlogWriter(const std::string& path, int gzip_level, double quantum_m)
+    : impl_(std::make_unique<Impl>()), path_(path), quantum_m_(static_cast<float>(quantum_m)) {
     if (gzip_level < 1 || gzip_level > 9)
         throw std::invalid_argument(path + ": gzip level must be 1..9");
+    if (!(quantum_m > 0 && quantum_m <= 0.05))
+        throw std::invalid_argument(path + ": coordinate quantum must be in (0, 0.05] m");
     if (!impl_->file.open(path, gzip_level)) throw std::runtime_error(path + ": cannot open for writing");
 }
 
@@ -60,7 +62,8 @@ void SimRawlogWriter::writeScan(double stamp_s, const Eigen::Isometry3d& T_world
     auto map = mrpt::maps::CSimplePointsMap::Create();
     map->reserve(points_sensor.size());
     for (const auto& p : points_sensor) {
-        map->insertPointFast(quantize(p.x()), quantize(p.y()), quantize(p.z()));
+        map->insertPointFast(quantize(p.x(), quantum_m_), quantize(p.y(), quantum_m_),
+                             quantize(p.z(), quantum_m_));
     }
     mrpt::obs::CObservationPointCloud cloud_obs;
     cloud_obs.sensorLabel = sensor_label;

@@ -41,18 +41,20 @@ nlohmann::json runRobot(const sim::SimulationConfig& config, const sim::RobotRun
                         const fs::path& dir, const SimulationRunOptions& options,
                         SimulationRunSummary& summary, unsigned seed) {
     auto samples = sim::sampleTrajectory(run.trajectory);
+    sim::applySway(samples, run.sway);
     sim::applyDrift(samples, run.drift);
     const std::string prefix = single ? "" : run.name + "_";
     const fs::path rawlog = dir / (run.name + ".rawlog");
-    SimRawlogWriter writer(rawlog.string(), options.gzip_level);
+    SimRawlogWriter writer(rawlog.string(), options.gzip_level, config.rawlog_quantum_m);
     std::mt19937 rng(seed);
     const sim::MountedSensor& mounted = run.mounted;
     std::uniform_real_distribution<double> azimuth(0.0, mounted.sensor.horizontal_resolution_deg);
     StampedPoses reported, truth;
     for (const auto& s : samples) {
         const auto t0 = Clock::now();
-        const auto points = sim::simulateScan(config.scene, s.T_world_robot_true * mounted.T_robot_sensor,
-                                              mounted.sensor, rng, azimuth(rng));
+        auto points = sim::simulateScan(config.scene, s.T_world_robot_true * mounted.T_robot_sensor,
+                                        mounted.sensor, rng, azimuth(rng));
+        if (config.rawlog_sort_points) sim::quantizeAndSort(points, config.rawlog_quantum_m, true);
         summary.ray_cast_ms += msSince(t0);
         writer.writeScan(s.stamp_s, s.T_world_robot_reported, s.covariance, mounted.T_robot_sensor,
                          points, mounted.label);

@@ -1,7 +1,10 @@
 #include "sim/CloudSampler.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include <tuple>
 
 #include "sim/ScanSimulator.h"
 
@@ -16,6 +19,22 @@ void validate(const CloudSampleParams& p) {
         throw std::invalid_argument("jitter_yaw_deg: must be in [0, 10] deg");
     if (p.jitter_tilt_deg < 0 || p.jitter_tilt_deg > 10)
         throw std::invalid_argument("jitter_tilt_deg: must be in [0, 10] deg");
+    if (!(p.quantum_m >= 0 && p.quantum_m <= 0.05))
+        throw std::invalid_argument("quantum_m: must be in [0, 0.05] m");
+}
+
+void quantizeAndSort(PointCloud& cloud, double quantum_m, bool sort) {
+    if (quantum_m > 0) {
+        const float step = static_cast<float>(quantum_m);
+        for (auto& p : cloud) {
+            for (int i = 0; i < 3; ++i) p[i] = std::round(p[i] / step) * step;
+        }
+    }
+    if (sort) {
+        std::sort(cloud.begin(), cloud.end(), [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+            return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z());
+        });
+    }
 }
 
 PointCloud simulateRobotCloud(const Scene& scene, const Eigen::Isometry3d& T_world_robot,
@@ -45,6 +64,7 @@ PointCloud simulateRobotCloud(const Scene& scene, const Eigen::Isometry3d& T_wor
         const Eigen::Isometry3f T = T_robot_sensork.cast<float>();
         for (const auto& p : scan) cloud.push_back(T * p);
     }
+    quantizeAndSort(cloud, params.quantum_m, params.sort_points);
     return cloud;
 }
 

@@ -25,6 +25,7 @@ struct RobotRun {
     std::string name = "robot";
     TrajectoryParams trajectory;
     DriftParams drift;
+    SwayParams sway;
     /// The robot's own sensor (robots of one scene may differ, e.g. a level LiDAR on a wheeled
     /// robot and a pitched one on a legged robot); the loader fills it from [sensor] by default.
     MountedSensor mounted;
@@ -46,9 +47,11 @@ struct SimulationConfig {
     Eigen::Isometry3d T_robot_sensor = Eigen::Isometry3d::Identity();
     double base_height_m = 0.35;           ///< [m] robot frame origin above the floor
     std::vector<RobotRun> robots;          ///< empty: the scene makes clouds only
+    double rawlog_quantum_m = 1.0 / 512.0; ///< [m] rawlog coordinates are multiples of this
+    bool rawlog_sort_points = false;       ///< sort each scan's points by (x, y, z) (gzip: smaller)
     std::vector<CloudPose> cloud_poses;    ///< empty: the scene makes rawlogs only
     CloudSampleParams cloud_params;
-    std::string cloud_extension = "pcd";   ///< pcd | ply | xyz
+    std::string cloud_extension = "pcd";   ///< pcd | ply | xyz, each optionally + ".gz"
     int cloud_first_index = 0;             ///< number of the first cloud file
 };
 

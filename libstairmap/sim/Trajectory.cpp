@@ -91,6 +91,23 @@ std::vector<TrajectorySample> sampleTrajectory(const TrajectoryParams& p) {
     return samples;
 }
 
+void applySway(std::vector<TrajectorySample>& samples, const SwayParams& sway) {
+    if (!(sway.tilt_std_deg >= 0 && sway.tilt_std_deg <= 10))
+        throw std::invalid_argument("sway_tilt_deg: must be in [0, 10] deg");
+    if (sway.tilt_std_deg == 0) return;
+    std::mt19937 rng(sway.seed);
+    std::normal_distribution<double> gauss(0.0, sway.tilt_std_deg * kDeg);
+    for (auto& s : samples) {
+        const double pitch = gauss(rng);
+        const double roll = gauss(rng);
+        s.T_world_robot_true.linear() = s.T_world_robot_true.linear() *
+                                        (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                                         Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                                            .toRotationMatrix();
+        s.T_world_robot_reported = s.T_world_robot_true;
+    }
+}
+
 void applyDrift(std::vector<TrajectorySample>& samples, const DriftParams& drift) {
     std::mt19937 rng(drift.seed);
     std::normal_distribution<double> gauss(0.0, 1.0);

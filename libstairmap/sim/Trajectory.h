@@ -29,6 +29,15 @@ struct DriftParams {
     unsigned seed = 1;
 };
 
+/// Body sway of a walking legged robot: each scan's true pose gets a random pitch and roll about
+/// the robot origin (the scan rings then fall at other heights on the treads, as on a real robot).
+/// The reported poses carry the same tilt: an IMU measures roll and pitch well; drift is in x, y,
+/// z and yaw only.
+struct SwayParams {
+    double tilt_std_deg = 0.0;  ///< [deg] std of pitch and of roll per scan (0: no sway)
+    unsigned seed = 1;
+};
+
 /// One scan time with the true pose and the pose reported to the mapper.
 struct TrajectorySample {
     double stamp_s = 0.0;
@@ -44,6 +53,10 @@ void validate(const TrajectoryParams& params);
 /// Samples the path at scan_rate_hz; reported poses equal the true ones (no drift yet).
 /// The robot turns in place to face each segment, then drives it at speed_mps.
 std::vector<TrajectorySample> sampleTrajectory(const TrajectoryParams& params);
+
+/// Tilts the true poses by the sway and sets the reported poses to them (call before applyDrift).
+/// No random draws when tilt_std_deg is 0 (the samples are left as they are).
+void applySway(std::vector<TrajectorySample>& samples, const SwayParams& sway);
 
 /// Replaces the reported poses with drifting ones (the true poses are untouched).
 void applyDrift(std::vector<TrajectorySample>& samples, const DriftParams& drift);

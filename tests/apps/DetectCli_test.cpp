@@ -82,6 +82,10 @@ TEST(DetectCli, BadFilesExitTwoWithOneLineNamingTheFile) {
     expectCliError(runStairmap("detect '" + dir + "/cloud.las'", dir), "cloud.las", "unknown point-cloud file");
     writeFile(dir + "/junk.rawlog", "not a rawlog");
     expectCliError(runStairmap("detect '" + dir + "/junk.rawlog'", dir), "junk.rawlog", "not a valid MRPT rawlog");
+    writeFile(dir + "/notgz.pcd.gz", "VERSION 0.7\n");
+    expectCliError(runStairmap("detect '" + dir + "/notgz.pcd.gz'", dir), "notgz.pcd.gz", "not gzip data");
+    writeFile(dir + "/cut.pcd.gz", std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03", 10));
+    expectCliError(runStairmap("detect '" + dir + "/cut.pcd.gz'", dir), "cut.pcd.gz", "truncated gzip data");
     std::filesystem::create_directories(dir + "/adir.pcd");
     expectCliError(runStairmap("detect '" + dir + "/adir.pcd'", dir), "adir.pcd", "not a regular file");
 }

@@ -76,6 +76,36 @@ TEST(SimSceneIni, RobotsCanCarryTheirOwnSensor) {
     EXPECT_DOUBLE_EQ(b.trajectory.base_height_m, 0.3);
 }
 
+TEST(SimSceneIni, NegativesSceneHoldsEveryPartAndNoStaircase) {
+    const auto path = writeIni("park.ini",
+                               "[scene]\ntype = negatives\n[negatives]\nparts = r c\n"
+                               "[r]\ntype = ramp\nramp_slope_deg = 8\n"
+                               "[c]\ntype = curb\norigin_x_m = 10\n"
+                               "[trajectory]\nwaypoints = -2 0 0; 12 0 0\nquantum_m = 0.0078125\n"
+                               "sort_points = true\nsway_tilt_deg = 1.5\nsway_seed = 9\n");
+    const auto config = loadSimulationConfig(path);
+    EXPECT_EQ(config.kind, "negative");
+    ASSERT_EQ(config.robots.size(), 1u);
+    EXPECT_DOUBLE_EQ(config.robots[0].sway.tilt_std_deg, 1.5);
+    EXPECT_EQ(config.robots[0].sway.seed, 9u);
+    EXPECT_TRUE(config.scene.truth().staircases.empty());
+    // The ramp adds its slab, top platform and floor; the curb its box and floor: 5 solids.
+    EXPECT_EQ(config.scene.primitives().size(), 5u);
+    EXPECT_DOUBLE_EQ(config.rawlog_quantum_m, 0.0078125);
+    EXPECT_TRUE(config.rawlog_sort_points);
+}
+
+TEST(SimSceneIni, CloudCompressionKeys) {
+    const auto path = writeIni("gz.ini",
+                               "[scene]\ntype = ascending\n[clouds]\nposes = -2 0 0 0\n"
+                               "format = pcd.gz\nquantum_m = 0.0078125\nsort_points = true\n");
+    const auto config = loadSimulationConfig(path);
+    EXPECT_EQ(config.cloud_extension, "pcd.gz");
+    EXPECT_DOUBLE_EQ(config.cloud_params.quantum_m, 0.0078125);
+    EXPECT_TRUE(config.cloud_params.sort_points);
+    EXPECT_DOUBLE_EQ(config.rawlog_quantum_m, 1.0 / 512.0);  // default: the old 2^-9 m
+}
+
 void expectError(const std::string& content, const std::string& needle) {
     const auto path = writeIni("bad.ini", content);
     try {
@@ -100,6 +130,18 @@ TEST(SimSceneIni, BadValuesNameFileSectionAndKey) {
     expectError("[scene]\ntype = ascending\n[trajectory]\nrobots = a\n[a]\nsensor = s\n"
                 "waypoints = 0 0 0; 1 0 0\n[s]\nmodel = vlp99\n",
                 "[s]");
+    expectError("[scene]\ntype = ascending\n" + clouds + "format = las.gz\n", "[clouds] format");
+    expectError("[scene]\ntype = ascending\n" + clouds + "quantum_m = 0.5\n", "quantum_m");
+    expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0; 1 0 0\nquantum_m = 0\n",
+                "[trajectory] quantum_m");
+    expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0; 1 0 0\nsway_tilt_deg = 20\n",
+                "[trajectory] sway_tilt_deg");
+    expectError("[scene]\ntype = negatives\n" + clouds, "[negatives] parts");
+    expectError("[scene]\ntype = negatives\n[negatives]\nparts = p\n[p]\ntype = stairs\n" + clouds,
+                "[p] type");
+    expectError("[scene]\ntype = negatives\n[negatives]\nparts = p\n[p]\ntype = curb\n"
+                "curb_height_m = -1\n" + clouds,
+                "[p] curb_height_m");
     EXPECT_THROW(loadSimulationConfig("/nonexistent/scene.ini"), std::runtime_error);
 }
 

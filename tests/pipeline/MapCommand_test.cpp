@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -35,17 +36,21 @@ double floorZ(const json& doc, int id) {
     return NAN;
 }
 
-/// The landmark whose first nosing centre is within 0.3 m of the truth's, or nullptr.
+/// The landmark whose location (centre of its first edge) lies on the truth's first nosing segment
+/// (within 0.2 m; the next nosing is >= 0.33 m away), or nullptr. Along the nosing the centre may
+/// sit anywhere: a partly seen first edge shifts it sideways (as `stairmap eval` measures location).
 const json* landmarkFor(const json& doc, const json& truth) {
     const auto& n0 = truth["nosings"][0];
-    Eigen::Vector3d gt(0, 0, 0);
+    Eigen::Vector3d a, b;
     for (int i = 0; i < 3; ++i) {
-        gt[i] = 0.5 * (n0["start"][i].get<double>() + n0["end"][i].get<double>());
+        a[i] = n0["start"][i].get<double>();
+        b[i] = n0["end"][i].get<double>();
     }
     for (const auto& s : doc["staircases"]) {
         const Eigen::Vector3d loc(s["location"][0].get<double>(), s["location"][1].get<double>(),
                                   s["location"][2].get<double>());
-        if ((loc - gt).norm() < 0.3) return &s;
+        const double t = std::clamp((loc - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+        if ((a + t * (b - a) - loc).norm() < 0.2) return &s;
     }
     return nullptr;
 }

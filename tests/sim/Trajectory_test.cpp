@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/GroundTruth.h"
@@ -107,6 +108,41 @@ TEST(CloudSampler, TruthInRobotFrameSetsSeenAsFromTheObserverFloor) {
     EXPECT_EQ(*robot.staircases[0].seen_as, StairDirection::Descending);
     robot = truthInRobotFrame(world, robotPoseAt({3, 0, 0.5}, 0, 0.4), 0.5);
     EXPECT_FALSE(robot.staircases[0].seen_as);
+}
+
+TEST(TrajectorySway, TiltsTrueAndReportedPosesByTheRequestedSpread) {
+    TrajectoryParams p;
+    p.waypoints = {{0, 0, 0}, {200, 0, 0}};
+    p.speed_mps = 1.0;
+    p.scan_rate_hz = 2.0;
+    auto samples = sampleTrajectory(p);
+    const auto level = samples;
+    applySway(samples, {2.0, 5});
+    double sum_sq = 0.0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const Eigen::Matrix3d R = samples[k].T_world_robot_true.linear();
+        // Tilt = angle between the body's z axis and the world's; translation and yaw untouched.
+        sum_sq += std::pow(std::acos(std::clamp(R(2, 2), -1.0, 1.0)), 2);
+        EXPECT_TRUE(samples[k].T_world_robot_true.translation().isApprox(
+            level[k].T_world_robot_true.translation()));
+        EXPECT_NEAR(yawOf(samples[k].T_world_robot_true), yawOf(level[k].T_world_robot_true), 0.05);
+        EXPECT_TRUE(samples[k].T_world_robot_reported.isApprox(samples[k].T_world_robot_true));
+    }
+    // Pitch and roll each N(0, 2 deg): the tilt's rms is sqrt(2) * 2 deg.
+    const double rms_deg = std::sqrt(sum_sq / samples.size()) * 180.0 / M_PI;
+    EXPECT_NEAR(rms_deg, std::sqrt(2.0) * 2.0, 0.3);
+}
+
+TEST(TrajectorySway, ZeroSwayLeavesPosesAloneAndBadSwayThrows) {
+    TrajectoryParams p;
+    p.waypoints = {{0, 0, 0}, {3, 1, 0}};
+    auto samples = sampleTrajectory(p);
+    const auto before = samples;
+    applySway(samples, {0.0, 1});
+    for (std::size_t k = 0; k < samples.size(); ++k)
+        EXPECT_TRUE(samples[k].T_world_robot_true.isApprox(before[k].T_world_robot_true));
+    EXPECT_THROW(applySway(samples, {-1.0, 1}), std::invalid_argument);
+    EXPECT_THROW(applySway(samples, {11.0, 1}), std::invalid_argument);
 }
 
 }  // namespace
