@@ -20,6 +20,7 @@ void forEachLandmarkParam(Params& p, Visitor&& visit) {
     visit("landmarks", "max_extrapolated_steps", p.max_extrapolated_steps);
     visit("landmarks", "endpoint_tolerance_m", p.endpoint_tolerance_m);
     visit("landmarks", "confirm_observations", p.confirm_observations);
+    visit("landmarks", "confirm_min_steps", p.confirm_min_steps);
     visit("landmarks", "fusion_min_sigma_m", p.fusion_min_sigma_m);
     visit("landmarks", "fusion_min_sigma_deg", p.fusion_min_sigma_deg);
     visit("floors", "floor_merge_tolerance_m", p.floor_merge_tolerance_m);

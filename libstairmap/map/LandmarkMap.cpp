@@ -14,6 +14,12 @@
 namespace stairmap {
 namespace {
 
+/// Seen often enough, and grown to a real flight (partial detections of 3 nosings are accepted).
+bool isConfirmed(const StaircaseLandmark& lm, const LandmarkParams& p) {
+    return lm.observations >= p.confirm_observations &&
+           static_cast<int>(lm.stairs.steps.size()) >= p.confirm_min_steps;
+}
+
 void fail(const std::string& what) { throw std::invalid_argument("LandmarkMapState: " + what); }
 
 void validateLandmark(const StaircaseLandmark& lm, const LandmarkMapState& state) {
@@ -82,7 +88,7 @@ LandmarkMap::LandmarkMap(LandmarkMapState state, const LandmarkParams& params)
               [](const auto& a, const auto& b) { return a.id < b.id; });
     // The confirmation threshold may differ from the one the map was made with.
     for (StaircaseLandmark& lm : state_.staircases) {
-        lm.confirmed = lm.observations >= params_.confirm_observations;
+        lm.confirmed = isConfirmed(lm, params_);
     }
     refreshFloors();
 }
@@ -122,7 +128,7 @@ LandmarkUpdate LandmarkMap::addDetection(const Staircase& detection_world, doubl
     update.merged_landmarks = !update.absorbed_ids.empty();
     std::sort(update.absorbed_ids.begin(), update.absorbed_ids.end());
     for (StaircaseLandmark& l : state_.staircases) {
-        l.confirmed = l.observations >= params_.confirm_observations;
+        l.confirmed = isConfirmed(l, params_);
     }
     refreshFloors();
     return update;

@@ -33,6 +33,9 @@ struct LandmarkParams {
                                          ///< farther out extends the edge (partial views). Keep it
                                          ///< above ~4x the end point noise or outliers widen edges
     int confirm_observations = 3;        ///< [-] K: a landmark is confirmed once seen this many times
+    /// [-] ...and once its fused flight has this many edges. Single detections may be partial (the
+    /// mapping presets accept 3 nosings), but a 1-2 step stage or a curb never grows to 4.
+    int confirm_min_steps = 4;
     /// Lower bounds on a fused edge's uncertainty, so that a landmark seen many times can still
     /// follow later (better) detections instead of freezing.
     double fusion_min_sigma_m = 0.003;    ///< [m] perpendicular position of an edge
@@ -90,6 +93,8 @@ inline void validateLandmarkParams(const LandmarkParams& p) {
     require(p.fusion_min_sigma_deg > 0 && p.fusion_min_sigma_deg < 45, "fusion_min_sigma_deg",
             "must be in (0, 45) deg");
     require(p.confirm_observations >= 1 && p.confirm_observations <= 1000, "confirm_observations",
+            "must be in [1, 1000]");
+    require(p.confirm_min_steps >= 1 && p.confirm_min_steps <= 1000, "confirm_min_steps",
             "must be in [1, 1000]");
     require(p.floor_merge_tolerance_m > 0 && p.floor_merge_tolerance_m < 5,
             "floor_merge_tolerance_m", "must be in (0, 5) m");

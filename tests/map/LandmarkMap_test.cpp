@@ -179,6 +179,25 @@ TEST(LandmarkMap, ConfirmedAfterKObservations) {
     }
 }
 
+TEST(LandmarkMap, AFlightOfFewerThanMinStepsIsNeverConfirmed) {
+    LandmarkParams params;
+    params.confirm_observations = 3;
+    params.confirm_min_steps = 4;
+    LandmarkMap map(params);
+    FlightTruth stage;
+    stage.num_steps = 3;  // a 2-step stage and its platform edge: three nosings
+    std::mt19937 rng(9);
+    for (int k = 1; k <= 6; ++k) map.addDetection(makeDetection(stage, noisy(0, 2), rng), k);
+    ASSERT_EQ(map.staircases().size(), 1u);
+    EXPECT_EQ(map.staircases()[0].observations, 6);
+    EXPECT_FALSE(map.staircases()[0].confirmed);
+    FlightTruth flight;  // the same seen with four nosings is confirmed after K observations
+    flight.origin_xy = {10.0, 0.0};
+    for (int k = 1; k <= 3; ++k) map.addDetection(makeDetection(flight, noisy(0, 3), rng), 10 + k);
+    ASSERT_EQ(map.staircases().size(), 2u);
+    EXPECT_TRUE(map.staircases()[1].confirmed);
+}
+
 TEST(LandmarkMap, RepeatedObservationsNeitherGrowStepsNorDrift) {
     FlightTruth truth;
     truth.origin_xy = {-3.0, 7.0};

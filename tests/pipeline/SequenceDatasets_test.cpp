@@ -47,7 +47,7 @@ class SequenceRun : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         out_ = new fs::path(scratch("sequences"));
-        for (const char* kind : {"ascending", "descending", "room"}) {
+        for (const char* kind : {"ascending", "descending", "room", "negatives"}) {
             const CliResult r = runStairmap(mapArgs(kind, *out_ / kind), *out_);
             ASSERT_EQ(r.exit_code, 0) << kind << ": " << r.err;
         }
@@ -94,6 +94,14 @@ TEST_F(SequenceRun, AscendingFlightIsOneTrueLandmark) { expectOneTrueLandmark(*o
 TEST_F(SequenceRun, FurnishedRoomGivesNoConfirmedLandmark) {
     const json map = readJson(*out_ / "room/landmarks.json");
     ASSERT_TRUE(readJson(datasetPath("sequences/room/gt.json"))["staircases"].empty());
+    EXPECT_TRUE(confirmed(map).empty()) << map.dump(1);
+}
+
+// Ramps of 6 and 14 deg, a 2-step stage, 0.45 m bleachers and a curb: the stage's three nosings are
+// a valid partial detection for the preset (min_steps 3), but never a confirmed landmark.
+TEST_F(SequenceRun, NegativesGiveNoConfirmedLandmark) {
+    const json map = readJson(*out_ / "negatives/landmarks.json");
+    ASSERT_TRUE(readJson(datasetPath("sequences/negatives/gt.json"))["staircases"].empty());
     EXPECT_TRUE(confirmed(map).empty()) << map.dump(1);
 }
 
