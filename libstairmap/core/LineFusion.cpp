@@ -11,10 +11,6 @@ std::pair<double, double> extentAlong(const LineSegment& s, const Eigen::Vector2
     return {std::min(a, b), std::max(a, b)};
 }
 
-double lineSpacing(const LineSegment& a, const LineSegment& b) {
-    return 0.5 * (std::abs(b.distanceTo(a.centre())) + std::abs(a.distanceTo(b.centre())));
-}
-
 double lineAngle(const LineSegment& a, const LineSegment& b) {
     const double d = std::fmod(std::abs(a.theta - b.theta), M_PI);
     return std::min(d, M_PI - d);

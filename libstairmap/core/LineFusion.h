@@ -26,9 +26,6 @@ void fuseDuplicateLines(std::vector<LineSegment>& lines, const LineFusionParams&
 /// Interval of the segment's end points projected on unit direction u.
 std::pair<double, double> extentAlong(const LineSegment& s, const Eigen::Vector2d& u);
 
-/// Mean perpendicular distance of each segment's centre to the other's line [m].
-double lineSpacing(const LineSegment& a, const LineSegment& b);
-
 /// Smallest angle between the two (undirected) lines [rad].
 double lineAngle(const LineSegment& a, const LineSegment& b);
 

@@ -8,16 +8,22 @@
 namespace stairmap {
 namespace {
 
+/// A line's unit normal and direction, computed once (LineSegment derives them from theta on
+/// every call, and this test runs for every pair of lines within a rise of each other).
+struct Frame {
+    Eigen::Vector2d normal, direction;
+};
+
 /// True when `low` lies under `high`: both of its end points within max_offset of high's line,
 /// lower by a riser's height at most, and covered by high along the line.
-bool isUnder(const LineSegment& low, const LineSegment& high, const RiserHitParams& p) {
+bool isUnder(const LineSegment& low, const LineSegment& high, const Frame& h,
+             const RiserHitParams& p) {
     const double dz = high.z - low.z;
     if (dz < p.min_dz_m || dz > p.max_dz_m) return false;
-    if (std::abs(high.distanceTo(low.start)) > p.max_offset_xy_m ||
-        std::abs(high.distanceTo(low.end)) > p.max_offset_xy_m)
+    if (std::abs(h.normal.dot(low.start) - high.rho) > p.max_offset_xy_m ||
+        std::abs(h.normal.dot(low.end) - high.rho) > p.max_offset_xy_m)
         return false;
-    const Eigen::Vector2d u = high.direction();
-    const auto el = extentAlong(low, u), eh = extentAlong(high, u);
+    const auto el = extentAlong(low, h.direction), eh = extentAlong(high, h.direction);
     const double cover = std::min(el.second, eh.second) - std::max(el.first, eh.first);
     return cover >= p.min_cover * low.length();
 }
@@ -69,14 +75,29 @@ int raiseLowEdges(std::vector<LineSegment>& edges, double min_drop_m) {
 }
 
 void dropRiserHits(std::vector<LineSegment>& lines, const RiserHitParams& params) {
-    std::vector<char> drop(lines.size(), 0);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        for (std::size_t j = 0; j < lines.size() && !drop[i]; ++j) {
-            if (j != i && isUnder(lines[i], lines[j], params)) drop[i] = 1;
+    const std::size_t n = lines.size();
+    std::vector<Frame> frames(n);
+    std::vector<std::size_t> by_z(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        frames[i] = {{std::cos(lines[i].theta), std::sin(lines[i].theta)}, lines[i].direction()};
+        by_z[i] = i;
+    }
+    std::sort(by_z.begin(), by_z.end(),
+              [&](std::size_t a, std::size_t b) { return lines[a].z < lines[b].z; });
+    std::vector<char> drop(n, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = by_z[k];
+        // Only the lines up to one rise higher can cover it.
+        for (std::size_t m = k + 1; m < n && lines[by_z[m]].z - lines[i].z <= params.max_dz_m; ++m) {
+            const std::size_t j = by_z[m];
+            if (isUnder(lines[i], lines[j], frames[j], params)) {
+                drop[i] = 1;
+                break;
+            }
         }
     }
     std::size_t w = 0;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         if (!drop[i]) lines[w++] = lines[i];
     }
     lines.resize(w);

@@ -94,20 +94,24 @@ std::optional<StairPair> checkStairPair(const LineSegment& lower, const LineSegm
     s.rise = upper.z - lower.z;  // condition 1
     if (s.rise < p.min_step_height_m - tol || s.rise > p.max_step_height_m + tol) return std::nullopt;
     if (lineAngle(lower, upper) > p.max_parallel_deg * kDegToRad) return std::nullopt;  // cond. 4
-    s.run = lineSpacing(lower, upper);  // condition 2
+    // Normals computed once (LineSegment derives them from theta on every call).
+    const Eigen::Vector2d n_low(std::cos(lower.theta), std::sin(lower.theta));
+    const Eigen::Vector2d n_up(std::cos(upper.theta), std::sin(upper.theta));
+    const double upper_side = n_low.dot(upper.centre()) - lower.rho;  // signed, from lower's line
+    // condition 2: mean perpendicular distance of each centre to the other's line
+    s.run = 0.5 * (std::abs(n_up.dot(lower.centre()) - upper.rho) + std::abs(upper_side));
     if (s.run < p.min_step_depth_m || s.run > p.max_step_depth_m) return std::nullopt;
     // condition 3, for some rise within the tolerance
     if (std::atan2(s.rise + tol, s.run) / kDegToRad < p.min_slope_deg ||
         std::atan2(std::max(0.0, s.rise - tol), s.run) / kDegToRad > p.max_slope_deg)
         return std::nullopt;
-    const Eigen::Vector2d u = lower.direction();
+    const Eigen::Vector2d u(-n_low.y(), n_low.x());  // lower.direction()
     const auto [lo, hi] = commonExtent(lower, upper, u);
     s.overlap = hi - lo;
     if (s.overlap < p.min_overlap_ratio * std::min(lower.length(), upper.length()))
         return std::nullopt;
     // Normal from lower to upper: the side of lower's line on which upper lies.
-    const Eigen::Vector2d n(std::cos(lower.theta), std::sin(lower.theta));
-    s.normal = (lower.distanceTo(upper.centre()) >= 0) ? n : Eigen::Vector2d(-n);
+    s.normal = upper_side >= 0 ? n_low : Eigen::Vector2d(-n_low);
     return s;
 }
 
