@@ -38,7 +38,8 @@ public:
 
     int operator()(float x, float y) const {
         const float f = (approxAtan2(y, x) + static_cast<float>(M_PI)) * scale_;
-        const float frac = f - std::floor(f);
+        // f >= 0 (up to rounding), so truncation is floor; std::floor is a libm call without SSE4.1
+        const float frac = f - static_cast<float>(static_cast<int>(f));
         if (frac < margin_ || frac > 1.f - margin_) return exact(x, y);  // near a boundary
         return std::clamp(static_cast<int>(f), 0, bins_ - 1);
     }

@@ -272,7 +272,7 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
         for (int ix = 0, col = iy * box.nx; ix < box.nx; ++ix, ++col) {
             const Column c = grid[col];
             if (c.bits == 0) {
-                // Most columns are empty: skip a run of four with one 16-byte test.
+                // Most columns are empty: skip a run of four with one test.
                 if (ix + 4 < box.nx && allEmpty4(grid.data() + col + 1)) {
                     ix += 4;
                     col += 4;
