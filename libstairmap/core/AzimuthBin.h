@@ -17,9 +17,10 @@ inline float approxAtan2(float y, float x) {
     const float hi = std::max(ax, ay);
     if (hi == 0.f) return 0.f;
     const float a = std::min(ax, ay) / hi, s = a * a;
-    float r = 0.999977223f +
-              s * (-0.332622912f +
-                   s * (0.193540896f + s * (-0.116427746f + s * (0.0526486605f - s * 0.0117196190f))));
+    float r =
+        0.999977223f +
+        s * (-0.332622912f +
+             s * (0.193540896f + s * (-0.116427746f + s * (0.0526486605f - s * 0.0117196190f))));
     r *= a;
     if (ay > ax) r = 1.57079637f - r;
     if (x < 0.f) r = 3.14159274f - r;
@@ -29,11 +30,12 @@ inline float approxAtan2(float y, float x) {
 /// Maps angles in [-pi, pi] to `bins` equal bins: floor((atan2(y, x) + pi) * bins / (2 pi)),
 /// clamped to [0, bins - 1], evaluated in float exactly like that expression with std::atan2.
 class AzimuthBinner {
-public:
+  public:
     explicit AzimuthBinner(int bins)
         : bins_(bins),
           scale_(static_cast<float>(bins / (2 * M_PI))),
-          // approximation error (2e-6 rad, with a wide safety factor) plus float rounding of the bin coordinate, in bins
+          // approximation error (2e-6 rad, with a wide safety factor) plus float rounding of the
+          // bin coordinate, in bins
           margin_(static_cast<float>(2.5e-5 * bins / (2 * M_PI)) + 4e-4f) {}
 
     int operator()(float x, float y) const {
@@ -49,7 +51,7 @@ public:
         return std::clamp(bin, 0, bins_ - 1);
     }
 
-private:
+  private:
     int bins_;
     float scale_;
     float margin_;

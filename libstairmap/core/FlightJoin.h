@@ -16,8 +16,8 @@ namespace stairmap {
 struct FlightJoinParams {
     double max_heading_diff_deg = 15.0;  ///< [deg] the two headings agree within this
     double max_gap_runs = 2.5;           ///< [-] the second starts at most this many runs beyond
-    double min_lateral_overlap = 0.5;    ///< [-] facing edges overlap by this fraction of the shorter
-    double height_tolerance_m = 0.04;    ///< [m] appended edges lie this close to the nosing line
+    double min_lateral_overlap = 0.5;  ///< [-] facing edges overlap by this fraction of the shorter
+    double height_tolerance_m = 0.04;  ///< [m] appended edges lie this close to the nosing line
 };
 
 /// Joins or drops continuing chains in `found` (robot frame, steps ordered outward from the

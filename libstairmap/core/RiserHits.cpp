@@ -88,7 +88,8 @@ void dropRiserHits(std::vector<LineSegment>& lines, const RiserHitParams& params
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t i = by_z[k];
         // Only the lines up to one rise higher can cover it.
-        for (std::size_t m = k + 1; m < n && lines[by_z[m]].z - lines[i].z <= params.max_dz_m; ++m) {
+        for (std::size_t m = k + 1; m < n && lines[by_z[m]].z - lines[i].z <= params.max_dz_m;
+             ++m) {
             const std::size_t j = by_z[m];
             if (isUnder(lines[i], lines[j], frames[j], params)) {
                 drop[i] = 1;

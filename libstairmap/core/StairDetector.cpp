@@ -4,21 +4,22 @@
 #include <cmath>
 
 #include "core/CylindricalRows.h"
-#include "core/FloorEstimation.h"
 #include "core/FlightJoin.h"
+#include "core/FloorEstimation.h"
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
 #include "core/StairSearch.h"
-#include "core/StaircaseMerge.h"
 #include "core/StaircaseGeometry.h"
+#include "core/StaircaseMerge.h"
 #include "core/TopView.h"
 
 namespace stairmap {
 namespace {
 
-constexpr double kRiserHitMinDrop = 0.02;  ///< [m] an edge this far below its flight's fit is a riser hit
+/// [m] an edge this far below its flight's fitted nosing line is a riser hit
+constexpr double kRiserHitMinDrop = 0.02;
 
 /// Floor height: the given one refined to the dominant level within +-window, or estimated.
 std::pair<double, bool> resolveFloor(const PointCloud& cloud, std::optional<double> floor_z,
@@ -145,13 +146,14 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
 }
 
 /// One flight whose nosings were each split in two (occlusion, a gap in the points) can come out of
-/// the search as two side-by-side chains at the same heights; Definition 2 (collinear edges, lateral
-/// gap <= 0.3 m) recognises them and they are fused into one staircase.
+/// the search as two side-by-side chains at the same heights; Definition 2 (collinear edges,
+/// lateral gap <= 0.3 m) recognises them and they are fused into one staircase.
 void mergeSplitFlights(std::vector<Staircase>& found, std::size_t first) {
     for (std::size_t i = first; i < found.size(); ++i) {
         for (std::size_t j = i + 1; j < found.size();) {
-            auto merged = found[i].direction == found[j].direction ? mergeStaircases(found[i], found[j])
-                                                                   : std::nullopt;
+            auto merged = found[i].direction == found[j].direction
+                              ? mergeStaircases(found[i], found[j])
+                              : std::nullopt;
             if (!merged) {
                 ++j;
                 continue;
@@ -165,9 +167,7 @@ void mergeSplitFlights(std::vector<Staircase>& found, std::size_t first) {
 
 }  // namespace
 
-StairDetector::StairDetector(const DetectorParams& params) : params_(params) {
-    params_.validate();
-}
+StairDetector::StairDetector(const DetectorParams& params) : params_(params) { params_.validate(); }
 
 DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
                                       std::optional<double> floor_z) const {

@@ -108,8 +108,8 @@ struct Column {
     int fx() const { return static_cast<int>((bits >> 16) & 0xffffu); }
     int fy() const { return static_cast<int>(bits & 0xffffu); }
 };
-constexpr int kMaxQuanta = (1 << 30) - 1;   ///< fits int arithmetic with the thresholds
-constexpr float kFraction = 65536.f;        ///< position steps per leaf
+constexpr int kMaxQuanta = (1 << 30) - 1;  ///< fits int arithmetic with the thresholds
+constexpr float kFraction = 65536.f;       ///< position steps per leaf
 
 /// Height quantisation: z_q = 1 + (z - z_lo) / step, so 1..kMaxQuanta covers [z_lo, z_hi].
 struct HeightCode {
@@ -149,8 +149,10 @@ void highestPoints(const PointCloud& cloud, const TopViewParams& p, const GridBo
         const float sx = keep ? gx : g_lo, sy = keep ? gy : g_lo, sz = keep ? q.z() : lo;
         const int ix = static_cast<int>(sx), iy = static_cast<int>(sy);
         const auto z_q = static_cast<std::uint64_t>(std::min(code.encode(sz), kMaxQuanta));
-        const auto fx = static_cast<std::uint64_t>(std::min(static_cast<int>((sx - ix) * kFraction), 65535));
-        const auto fy = static_cast<std::uint64_t>(std::min(static_cast<int>((sy - iy) * kFraction), 65535));
+        const auto fx =
+            static_cast<std::uint64_t>(std::min(static_cast<int>((sx - ix) * kFraction), 65535));
+        const auto fy =
+            static_cast<std::uint64_t>(std::min(static_cast<int>((sy - iy) * kFraction), 65535));
         const std::uint64_t word = keep ? (z_q << 32 | fx << 16 | fy) : 0u;
         Column& c = grid[iy * box.nx + ix];
         c.bits = std::max(c.bits, word);
@@ -227,7 +229,8 @@ int codeClamped(const HeightCode& code, double z) {
 }
 
 /// Candidate flags of an occupied column (0: not a nosing candidate).
-std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy, const Thresholds& t) {
+std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy,
+                      const Thresholds& t) {
     const int z = grid[col].z_q();
     if (flatNeighbourhood(grid, col, nx, z - t.min_dz, z + t.spill_max)) return 0;
     int offsets[kPad];
@@ -242,12 +245,14 @@ std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy, c
     // floor above) does not count.
     const bool back_spill = back.first_z > lo && back.first_z < hi;
     const bool front_spill = front.first_z > lo && front.first_z < hi;
-    return (front.drop && !back_spill ? kFrontDrop : 0) | (back.drop && !front_spill ? kBackDrop : 0);
+    return (front.drop && !back_spill ? kFrontDrop : 0) |
+           (back.drop && !front_spill ? kBackDrop : 0);
 }
 
 }  // namespace
 
-void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<TopViewCell>& cells) {
+void buildTopView(const PointCloud& cloud, const TopViewParams& p,
+                  std::vector<TopViewCell>& cells) {
     cells.clear();
     // One spare column beyond kPad: float rounding may put an extreme point one cell further out.
     const GridBox box = boundingGrid(cloud, p, kPad + 1);
@@ -283,8 +288,8 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p, std::vector<T
             const std::uint8_t flags = classify(grid.data(), col, box.nx, cx, cy, t);
             if (flags == 0) continue;
             cells.push_back({box.x0 + (ix + (c.fx() + 0.5f) / kFraction) * leaf,
-                             box.y0 + (iy + (c.fy() + 0.5f) / kFraction) * leaf, code.decode(c.z_q()),
-                             flags});
+                             box.y0 + (iy + (c.fy() + 0.5f) / kFraction) * leaf,
+                             code.decode(c.z_q()), flags});
         }
     }
 }

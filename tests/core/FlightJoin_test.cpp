@@ -1,8 +1,9 @@
 // Two chains of one flight are joined (consistent) or the far one dropped (corrupted); separate
 // flights stay separate.
+#include "core/FlightJoin.h"
+
 #include <gtest/gtest.h>
 
-#include "core/FlightJoin.h"
 #include "core/StaircaseGeometry.h"
 
 namespace stairmap {

@@ -1,7 +1,7 @@
 // Riser hits of a sparse LiDAR: lines under a nosing are dropped, low edges of a flight are raised.
-#include <gtest/gtest.h>
-
 #include "core/RiserHits.h"
+
+#include <gtest/gtest.h>
 
 namespace stairmap {
 namespace {
@@ -55,7 +55,7 @@ TEST(RiserHits, LowEdgesAreRaisedOntoTheFlightsNosingLine) {
 
 TEST(RiserHits, AConsistentFlightIsLeftAlone) {
     std::vector<LineSegment> edges = flight(6, 0.2, -0.18);  // descending: heights fall
-    edges[2].z += 0.008;  // noise within the tolerance
+    edges[2].z += 0.008;                                     // noise within the tolerance
     const auto before = edges;
     EXPECT_EQ(raiseLowEdges(edges, 0.02), 0);
     for (std::size_t k = 0; k < edges.size(); ++k) EXPECT_EQ(edges[k].z, before[k].z);

@@ -1,12 +1,12 @@
 // Top view (paper Sec. III-A): highest point per column and nosing candidates, on exact geometry.
+#include "core/TopView.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
-
-#include "core/TopView.h"
 
 namespace stairmap {
 namespace {
@@ -129,10 +129,10 @@ TEST(TopView, NonFinitePointsAndPointsOutOfRangeOrBandAreIgnored) {
     dirty.emplace_back(2.5f, 0.1f, nan);
     dirty.emplace_back(inf, 0.f, -0.3f);
     dirty.emplace_back(-inf, -inf, -inf);
-    dirty.emplace_back(2.5f, 0.2f, 3.5f);    // above z_hi (3 m): a ceiling
-    dirty.emplace_back(2.5f, 0.2f, -3.5f);   // below z_lo
-    dirty.emplace_back(40.f, 0.f, -0.3f);    // beyond max_range (10 m)
-    dirty.emplace_back(7.2f, 7.2f, -0.3f);   // inside the +-10 m box, beyond the 10 m circle
+    dirty.emplace_back(2.5f, 0.2f, 3.5f);   // above z_hi (3 m): a ceiling
+    dirty.emplace_back(2.5f, 0.2f, -3.5f);  // below z_lo
+    dirty.emplace_back(40.f, 0.f, -0.3f);   // beyond max_range (10 m)
+    dirty.emplace_back(7.2f, 7.2f, -0.3f);  // inside the +-10 m box, beyond the 10 m circle
     std::vector<TopViewCell> a, b;
     buildTopView(clean, stepParams(), a);
     buildTopView(dirty, stepParams(), b);
