@@ -108,8 +108,12 @@ void expectMatchesBuilding(const LandmarkMap& map, const Building& b) {
         ASSERT_GE(lm.bottom_floor, 0);
         ASSERT_GE(lm.top_floor, 0);
         for (const Floor& fl : floors) {
-            if (fl.id == lm.bottom_floor) EXPECT_NEAR(fl.z, f.floor_z, 0.05);
-            if (fl.id == lm.top_floor) EXPECT_NEAR(fl.z, f.topZ(), 0.05);
+            if (fl.id == lm.bottom_floor) {
+                EXPECT_NEAR(fl.z, f.floor_z, 0.05);
+            }
+            if (fl.id == lm.top_floor) {
+                EXPECT_NEAR(fl.z, f.topZ(), 0.05);
+            }
         }
     }
 }
