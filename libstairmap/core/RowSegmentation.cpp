@@ -30,16 +30,27 @@ void splitChain(const RowBuffer& b, Range chain, double d_p, std::vector<Range>&
         const Range r = stack.back();
         stack.pop_back();
         const double ax = b.x[r.first], ay = b.y[r.first];
-        double dx = b.x[r.second] - ax, dy = b.y[r.second] - ay;
-        const double len = std::hypot(dx, dy);
+        const double dx = b.x[r.second] - ax, dy = b.y[r.second] - ay;
+        const double len = std::sqrt(dx * dx + dy * dy);
         int worst = -1;
-        double worst_d = d_p;
-        for (int i = r.first + 1; i < r.second; ++i) {
-            const double px = b.x[i] - ax, py = b.y[i] - ay;
-            const double d = len > 1e-9 ? std::abs(px * dy - py * dx) / len : std::hypot(px, py);
-            if (d > worst_d) {
-                worst_d = d;
-                worst = i;
+        if (len > 1e-9) {
+            // distance * len = |cross|: the farthest point without a division per point
+            double worst_cross = d_p * len;
+            for (int i = r.first + 1; i < r.second; ++i) {
+                const double cross = std::abs((b.x[i] - ax) * dy - (b.y[i] - ay) * dx);
+                if (cross > worst_cross) {
+                    worst_cross = cross;
+                    worst = i;
+                }
+            }
+        } else {  // a closed loop: distances to the common end point
+            double worst_d2 = d_p * d_p;
+            for (int i = r.first + 1; i < r.second; ++i) {
+                const double px = b.x[i] - ax, py = b.y[i] - ay;
+                if (px * px + py * py > worst_d2) {
+                    worst_d2 = px * px + py * py;
+                    worst = i;
+                }
             }
         }
         if (worst < 0) {
@@ -100,12 +111,15 @@ void segmentLinear(const RowBuffer& b, const SegmentationParams& p,
     }
 }
 
-/// Distance of point i to the chord through points a and b.
-float chordDistance(const float* x, const float* y, int a, int i, int b) {
+/// True when point i lies farther than d from the chord through points a and b (compared in
+/// squares: no square root or division per point).
+bool fartherFromChord(const float* x, const float* y, int a, int i, int b, float d) {
     const float dx = x[b] - x[a], dy = y[b] - y[a];
-    const float len = std::sqrt(dx * dx + dy * dy);
     const float px = x[i] - x[a], py = y[i] - y[a];
-    return len > 1e-6f ? std::abs(px * dy - py * dx) / len : std::sqrt(px * px + py * py);
+    const float len2 = dx * dx + dy * dy;
+    if (!(len2 > 1e-12f)) return px * px + py * py > d * d;  // a and b coincide
+    const float cross = px * dy - py * dx;
+    return cross * cross > d * d * len2;
 }
 
 /// Copies the row starting at `start` (circularly), dropping single-point spikes: a point far
@@ -123,7 +137,7 @@ void rotateInto(const float* x, const float* y, const float* z, int n, int start
     for (int k = 0; k < n; ++k) {
         const int next = i + 1 == n ? 0 : i + 1;
         const bool spike = k > 0 && k + 1 < n && gap2(x, y, prev, next) <= max_gap2 &&
-                           chordDistance(x, y, prev, i, next) > d_p_f;
+                           fartherFromChord(x, y, prev, i, next, d_p_f);
         if (!spike) {
             b.x.push_back(x[i]);
             b.y.push_back(y[i]);
