@@ -1,9 +1,9 @@
 #include "core/CylindricalRows.h"
 
-#include "core/AzimuthBin.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "core/AzimuthBin.h"
 
 namespace stairmap {
 

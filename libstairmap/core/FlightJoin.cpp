@@ -8,12 +8,6 @@
 namespace stairmap {
 namespace {
 
-/// Extent [lo, hi] of an edge along the unit XY direction u.
-std::pair<double, double> extentAlong(const StairEdge& e, const Eigen::Vector2d& u) {
-    const double a = u.dot(e.start.head<2>()), b = u.dot(e.end.head<2>());
-    return {std::min(a, b), std::max(a, b)};
-}
-
 /// True when `far` starts beyond `near`'s last edge as a continuation of the same flight.
 bool continues(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
     if (near.direction != far.direction || near.steps.empty() || far.steps.empty()) return false;
@@ -30,7 +24,7 @@ bool continues(const Staircase& near, const Staircase& far, const FlightJoinPara
         climb > p.max_gap_runs * near.step_height + p.height_tolerance_m)
         return false;
     const Eigen::Vector2d lateral(-h.y(), h.x());
-    const auto a = extentAlong(last, lateral), b = extentAlong(first, lateral);
+    const auto a = lateralExtent(last, lateral), b = lateralExtent(first, lateral);
     const double common = std::min(a.second, b.second) - std::max(a.first, b.first);
     return common >= p.min_lateral_overlap * std::min(last.length(), first.length());
 }

@@ -56,11 +56,6 @@ double robustWidth(const std::vector<StairEdge>& steps) {
     return (n % 2 == 1) ? lengths[mid] : 0.5 * (lengths[mid - 1] + lengths[mid]);
 }
 
-/// Extent [lo, hi] of an edge along the unit XY direction `lateral`.
-std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral) {
-    const double a = lateral.dot(e.start.head<2>()), b = lateral.dot(e.end.head<2>());
-    return {std::min(a, b), std::max(a, b)};
-}
 
 double median(std::vector<double> v) {
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -103,6 +98,11 @@ void completePartialEdges(std::vector<StairEdge>& steps, double alpha, double wi
 }
 
 }  // namespace
+
+std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral) {
+    const double a = lateral.dot(e.start.head<2>()), b = lateral.dot(e.end.head<2>());
+    return {std::min(a, b), std::max(a, b)};
+}
 
 double edgeSpacingXY(const StairEdge& a, const StairEdge& b) {
     return 0.5 * (pointToLineXY(a.centre().head<2>(), b) + pointToLineXY(b.centre().head<2>(), a));

@@ -3,6 +3,8 @@
 // the paper divides sums of k-1 differences by 2k; here rise and run are least-squares slopes of the
 // edge heights / cumulative edge spacings against the step index, which uses every edge).
 
+#include <utility>
+
 #include "core/Staircase.h"
 
 namespace stairmap {
@@ -23,5 +25,8 @@ void estimateGeometry(Staircase& stairs);
 /// Perpendicular XY distance between two edges: mean of the distance of each centre to the other
 /// edge's supporting line [m].
 double edgeSpacingXY(const StairEdge& a, const StairEdge& b);
+
+/// Extent [lo, hi] of an edge's XY end points projected on the unit direction `lateral` [m].
+std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral);
 
 }  // namespace stairmap
