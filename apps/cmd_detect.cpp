@@ -11,10 +11,10 @@
 
 #include "Commands.h"
 #include "core/StairDetector.h"
-#include "io/CloudFile.h"
-#include "io/DetectorConfig.h"
-#include "io/IniFile.h"
-#include "io/StaircaseJson.h"
+#include "io/cloud/CloudFile.h"
+#include "io/config/DetectorConfig.h"
+#include "io/config/IniFile.h"
+#include "io/json/StaircaseJson.h"
 
 namespace stairmap::apps {
 

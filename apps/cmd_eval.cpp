@@ -12,12 +12,12 @@
 #include "Commands.h"
 #include "core/Evaluation.h"
 #include "core/StairDetector.h"
-#include "io/CloudFile.h"
-#include "io/DetectorConfig.h"
-#include "io/EvalInputs.h"
-#include "io/EvalJson.h"
-#include "io/GroundTruthJson.h"
-#include "io/IniFile.h"
+#include "io/cloud/CloudFile.h"
+#include "io/config/DetectorConfig.h"
+#include "io/eval/EvalInputs.h"
+#include "io/eval/EvalJson.h"
+#include "io/json/GroundTruthJson.h"
+#include "io/config/IniFile.h"
 
 namespace stairmap::apps {
 

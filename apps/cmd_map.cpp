@@ -8,16 +8,16 @@
 #include <string>
 
 #include "Commands.h"
-#include "io/AtomicFile.h"
-#include "io/LandmarkJson.h"
-#include "io/MapperConfig.h"
-#include "io/ProcessMemory.h"
-#include "io/ProgressBar.h"
-#include "io/RawlogScanSource.h"
-#include "map/MapOverview.h"
-#include "map/MapScene.h"
+#include "io/system/AtomicFile.h"
+#include "io/json/LandmarkJson.h"
+#include "io/config/MapperConfig.h"
+#include "io/system/ProcessMemory.h"
+#include "io/system/ProgressBar.h"
+#include "io/rawlog/RawlogScanSource.h"
+#include "viz/MapOverview.h"
+#include "viz/MapScene.h"
 #include "pipeline/Mapper.h"
-#include "pipeline/MapperJson.h"
+#include "io/json/MapperJson.h"
 
 namespace stairmap::apps {
 namespace {
@@ -62,7 +62,7 @@ public:
         detections_.open(outPath("detections.jsonl"), std::ios::trunc);
         if (!detections_) throw std::runtime_error(outPath("detections.jsonl") + ": cannot open");
         mapper_.setDetectionCallback([this](const pipeline::DetectionRecord& r) {
-            detections_ << pipeline::detectionRecordToJson(r).dump() << '\n' << std::flush;
+            detections_ << io::detectionRecordToJson(r).dump() << '\n' << std::flush;
         });
         mapper_.setLandmarksChangedCallback([this](const LandmarkMap& landmarks) {
             io::saveLandmarkMapAtomic(outPath("landmarks.json"), landmarks);
@@ -130,15 +130,15 @@ private:
         const auto t0 = Clock::now();
         io::saveLandmarkMapAtomic(outPath("landmarks.json"), mapper_.landmarks());
         mapper_.voxelMap().save(outPath("map.bt"));
-        const map::MapView view = mapView();
-        map::saveMapScene(view, outPath("scene.3Dscene"));
-        map::saveMapOverview(view, outPath("overview.png"));
+        const viz::MapView view = mapView();
+        viz::saveMapScene(view, outPath("scene.3Dscene"));
+        viz::saveMapOverview(view, outPath("overview.png"));
         output_s_ = secondsSince(t0);
         io::writeTextFileAtomic(outPath("stats.json"), statsJson(source).dump(2) + "\n");
     }
 
-    map::MapView mapView() const {
-        map::MapView view;
+    viz::MapView mapView() const {
+        viz::MapView view;
         view.voxels = &mapper_.voxelMap();
         view.staircases = mapper_.landmarks().staircases();
         view.floors = mapper_.landmarks().floors();
@@ -148,7 +148,7 @@ private:
 
     nlohmann::json statsJson(const io::RawlogScanSource& source) const {
         const auto& st = mapper_.stats();
-        nlohmann::json j = pipeline::mapperStatsToJson(st);
+        nlohmann::json j = io::mapperStatsToJson(st);
         j["read_ms"] = 1000.0 * read_s_;
         j["output_ms"] = 1000.0 * output_s_;
         j["processing_s"] = processing_s_;
@@ -162,7 +162,7 @@ private:
         j["source"] = {{"scans_read", ss.scans_read}, {"skipped_no_pose", ss.skipped_no_pose},
                        {"skipped_label", ss.skipped_label}, {"unsupported", ss.unsupported},
                        {"non_finite_dropped", ss.non_finite_dropped}};
-        j["params"] = pipeline::mapperParamsToJson(params_);
+        j["params"] = io::mapperParamsToJson(params_);
         return j;
     }
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "Commands.h"
-#include "io/SceneIni.h"
-#include "io/SimulationRunner.h"
+#include "io/config/SceneIni.h"
+#include "io/simout/SimulationRunner.h"
 
 namespace stairmap::apps {
 

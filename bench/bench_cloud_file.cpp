@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "io/CloudFile.h"
+#include "io/cloud/CloudFile.h"
 
 namespace {
 

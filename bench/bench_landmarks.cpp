@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "io/LandmarkJson.h"
+#include "io/json/LandmarkJson.h"
 #include "map/LandmarkMap.h"
 
 namespace {

@@ -15,7 +15,7 @@
 #include <random>
 
 #include "core/Scan.h"
-#include "io/ProcessMemory.h"
+#include "io/system/ProcessMemory.h"
 #include "pipeline/Mapper.h"
 #include "sim/BuildingGenerator.h"
 #include "sim/ScanSimulator.h"

@@ -17,8 +17,8 @@
 #include <random>
 #include <string>
 
-#include "io/ObservationToPoints.h"
-#include "io/RawlogScanSource.h"
+#include "io/rawlog/ObservationToPoints.h"
+#include "io/rawlog/RawlogScanSource.h"
 
 namespace {
 

@@ -28,7 +28,7 @@ class LandmarkMap {
 public:
     /// Throws std::invalid_argument naming the field if a parameter is out of range.
     explicit LandmarkMap(const LandmarkParams& params = {});
-    /// Continues a saved map (see io/LandmarkJson.h). Throws std::invalid_argument if the state is
+    /// Continues a saved map (see io/json/LandmarkJson.h). Throws std::invalid_argument if the state is
     /// inconsistent (duplicate ids, ids >= next id, non-finite numbers, empty staircases).
     LandmarkMap(LandmarkMapState state, const LandmarkParams& params);
 

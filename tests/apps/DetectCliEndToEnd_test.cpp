@@ -14,7 +14,7 @@
 
 #include "CliRunner.h"
 #include "StairCloudGenerator.h"
-#include "io/CloudFile.h"
+#include "io/cloud/CloudFile.h"
 
 namespace stairmap::test {
 namespace {

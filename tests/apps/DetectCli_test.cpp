@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.h"
-#include "io/CloudFile.h"
+#include "io/cloud/CloudFile.h"
 
 namespace stairmap::test {
 namespace {

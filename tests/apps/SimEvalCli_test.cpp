@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.h"
-#include "io/CloudFile.h"
-#include "io/GroundTruthJson.h"
-#include "io/StaircaseJson.h"
+#include "io/cloud/CloudFile.h"
+#include "io/json/GroundTruthJson.h"
+#include "io/json/StaircaseJson.h"
 
 namespace stairmap::test {
 namespace {

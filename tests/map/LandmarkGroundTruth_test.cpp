@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/LandmarkJson.h"
+#include "io/json/LandmarkJson.h"
 #include "LandmarkTestMaps.h"
 
 namespace stairmap {

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "io/LandmarkJson.h"
+#include "io/json/LandmarkJson.h"
 #include "LandmarkTestMaps.h"
 #include "map/LandmarkMap.h"
 #include "core/StaircaseCanonical.h"

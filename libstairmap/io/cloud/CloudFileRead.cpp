@@ -1,0 +1,67 @@
+// readCloudFile: file checks, extension dispatch and the "<path>: " prefix on reader errors.
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/cloud/CloudFile.h"
+#include "io/cloud/CloudFileFormat.h"
+#include "io/cloud/GzipBuffer.h"
+#include "io/rawlog/RawlogCloud.h"
+
+namespace stairmap::io {
+
+namespace {
+
+/// Throws unless `path` is an existing, non-empty regular file.
+void checkReadableFile(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) throw std::runtime_error(path + ": file does not exist");
+    if (!fs::is_regular_file(status)) throw std::runtime_error(path + ": not a regular file");
+    const auto size = fs::file_size(path, ec);
+    if (ec) throw std::runtime_error(path + ": cannot determine the file size (" + ec.message() + ")");
+    if (size == 0) throw std::runtime_error(path + ": file is empty");
+}
+
+PointCloud readFormat(std::istream& in, CloudFileFormat format) {
+    switch (format) {
+        case CloudFileFormat::Xyz: return readXyz(in);
+        case CloudFileFormat::Pcd: return readPcd(in);
+        default: return readPly(in);
+    }
+}
+
+PointCloud readStreamFormat(const std::string& path, CloudFileFormat format) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path + ": cannot be opened for reading");
+    try {
+        if (!isGzippedCloudPath(path)) return readFormat(in, format);
+        // .pcd.gz etc.: inflate the whole file in memory, then parse it like the plain format.
+        const std::string compressed{std::istreambuf_iterator<char>(in),
+                                     std::istreambuf_iterator<char>()};
+        if (in.bad()) throw std::runtime_error("read error");
+        std::istringstream plain(gunzipBuffer(compressed), std::ios::binary);
+        return readFormat(plain, format);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
+}
+
+}  // namespace
+
+PointCloud readCloudFile(const std::string& path) {
+    const CloudFileFormat format = cloudFileFormatOf(path);
+    if (format == CloudFileFormat::Unknown) {
+        throw std::runtime_error(path + ": unknown point-cloud file extension (expected .xyz, .pcd, "
+                                        ".ply (each optionally .gz) or .rawlog)");
+    }
+    checkReadableFile(path);
+    if (format == CloudFileFormat::Rawlog) return readRawlogCloud(path);
+    return readStreamFormat(path, format);
+}
+
+}  // namespace stairmap::io

@@ -1,0 +1,76 @@
+#include "io/eval/EvalJson.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace stairmap::io {
+
+namespace {
+using nlohmann::json;
+
+json rowJson(const KindSummary& r) {
+    return {{"kind", r.kind},
+            {"clouds", r.clouds},
+            {"samples", r.samples},
+            {"detections", r.detections},
+            {"false_positives", r.false_positives},
+            {"mae_height_cm", r.mae_height_cm},
+            {"mae_depth_cm", r.mae_depth_cm},
+            {"mae_width_cm", r.mae_width_cm},
+            {"mae_location_cm", r.mae_location_cm},
+            {"mean_time_ms", r.mean_time_ms ? json(*r.mean_time_ms) : json(nullptr)}};
+}
+
+json sampleJson(const SampleOutcome& s) {
+    json errors = json::array();
+    for (const auto& e : s.errors) {
+        errors.push_back({{"height_cm", e.height_cm},
+                          {"depth_cm", e.depth_cm},
+                          {"width_cm", e.width_cm},
+                          {"location_cm", e.location_cm}});
+    }
+    return {{"name", s.name},       {"kind", s.kind},
+            {"expected", s.expected}, {"matched", s.matched},
+            {"false_positives", s.false_positives}, {"missed", s.missed},
+            {"errors", errors}};
+}
+
+std::string rowText(const KindSummary& r) {
+    char mae[128];
+    if (r.detections > 0) {
+        std::snprintf(mae, sizeof(mae), "%8.2f %8.2f %8.2f %10.2f", r.mae_height_cm, r.mae_depth_cm,
+                      r.mae_width_cm, r.mae_location_cm);
+    } else {
+        std::snprintf(mae, sizeof(mae), "%8s %8s %8s %10s", "-", "-", "-", "-");
+    }
+    char time[32];
+    if (r.mean_time_ms) std::snprintf(time, sizeof(time), "%9.1f", *r.mean_time_ms);
+    else std::snprintf(time, sizeof(time), "%9s", "-");
+    char line[256];
+    std::snprintf(line, sizeof(line), "%-12s %6d %7d %9d %6d  %s %s\n", r.kind.c_str(), r.clouds,
+                  r.samples, r.detections, r.false_positives, mae, time);
+    return line;
+}
+}  // namespace
+
+json evaluationToJson(const EvaluationReport& report, const EvaluationParams& params) {
+    json kinds = json::array();
+    for (const auto& k : report.kinds) kinds.push_back(rowJson(k));
+    json samples = json::array();
+    for (const auto& s : report.samples) samples.push_back(sampleJson(s));
+    return {{"params", {{"max_xy_m", params.max_xy_m}, {"max_z_m", params.max_z_m}}},
+            {"kinds", kinds},
+            {"total", rowJson(report.total)},
+            {"samples", samples}};
+}
+
+std::string formatEvaluationTable(const EvaluationReport& report) {
+    std::ostringstream out;
+    out << "kind         clouds samples detected FP     height    depth    width   location  time/det\n"
+        << "                                            MAE cm   MAE cm   MAE cm     MAE cm        ms\n";
+    for (const auto& k : report.kinds) out << rowText(k);
+    out << rowText(report.total);
+    return out.str();
+}
+
+}  // namespace stairmap::io

@@ -1,0 +1,75 @@
+// Loading [detector] from INI text and from the shipped config/default.ini.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <string>
+
+#include "io/config/DetectorConfig.h"
+#include "io/config/IniFile.h"
+
+namespace stairmap::io {
+namespace {
+
+DetectorConfig load(const std::string& text) {
+    mrpt::config::CConfigFileMemory cfg(text);
+    return loadDetectorConfig(cfg);
+}
+
+std::string errorOf(const std::string& text) {
+    try {
+        load(text);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(DetectorConfig, MissingSectionKeepsDefaults) {
+    const DetectorConfig c = load("[other]\nx = 1\n");
+    EXPECT_DOUBLE_EQ(c.params.leaf_size_m, DetectorParams{}.leaf_size_m);
+    EXPECT_EQ(c.params.min_steps, DetectorParams{}.min_steps);
+    EXPECT_FALSE(c.robot_height_m.has_value());
+}
+
+TEST(DetectorConfig, ReadsNumbersIntegersBooleansAndRobotHeight) {
+    const DetectorConfig c = load(
+        "[detector]\nleaf_size_m = 0.03\nmin_steps = 4\ndetect_descending = false\n"
+        "robot_height_m = 0.62\nmax_slope_deg = 55\n");
+    EXPECT_DOUBLE_EQ(c.params.leaf_size_m, 0.03);
+    EXPECT_EQ(c.params.min_steps, 4);
+    EXPECT_FALSE(c.params.detect_descending);
+    EXPECT_TRUE(c.params.detect_ascending);
+    EXPECT_DOUBLE_EQ(c.params.max_slope_deg, 55.0);
+    ASSERT_TRUE(c.robot_height_m.has_value());
+    EXPECT_DOUBLE_EQ(*c.robot_height_m, 0.62);
+}
+
+TEST(DetectorConfig, BadValuesNameTheKey) {
+    EXPECT_NE(errorOf("[detector]\nleaf_size_m = abc\n").find("leaf_size_m"), std::string::npos);
+    EXPECT_NE(errorOf("[detector]\nmin_steps = 2.5\n").find("min_steps"), std::string::npos);
+    EXPECT_NE(errorOf("[detector]\ndetect_ascending = maybe\n").find("detect_ascending"),
+              std::string::npos);
+    EXPECT_NE(errorOf("[detector]\nrobot_height_m = 0.5m\n").find("robot_height_m"),
+              std::string::npos);
+    // Parses, but out of range: the validation names the field.
+    EXPECT_NE(errorOf("[detector]\nmax_step_height_m = 0.05\n").find("max_step_height_m"),
+              std::string::npos);
+}
+
+TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
+    const auto cfg = openIniFile(std::string(STAIRMAP_SOURCE_DIR) + "/config/default.ini");
+    const DetectorConfig c = loadDetectorConfig(*cfg);
+    const DetectorParams d;
+    EXPECT_DOUBLE_EQ(c.params.leaf_size_m, d.leaf_size_m);
+    EXPECT_DOUBLE_EQ(c.params.min_step_height_m, d.min_step_height_m);
+    EXPECT_DOUBLE_EQ(c.params.max_step_depth_m, d.max_step_depth_m);
+    EXPECT_DOUBLE_EQ(c.params.edge_spill_dz_m, d.edge_spill_dz_m);
+    EXPECT_DOUBLE_EQ(c.params.max_collinear_gap_m, d.max_collinear_gap_m);
+    EXPECT_EQ(c.params.azimuth_bins, d.azimuth_bins);
+    EXPECT_EQ(c.params.min_steps, d.min_steps);
+    ASSERT_TRUE(c.robot_height_m.has_value());
+    EXPECT_GT(*c.robot_height_m, 0.0);
+}
+
+}  // namespace
+}  // namespace stairmap::io
