@@ -8,8 +8,8 @@ namespace stairmap::fleet {
 
 struct AlignmentParams {
     // --- candidate pairs: two landmarks may be one flight when their shapes agree
-    double rise_tolerance_m = 0.02;     ///< [m] |rise_a - rise_b| (or 10 % of the rise, if larger)
-    double run_tolerance_m = 0.04;      ///< [m] |run_a - run_b| (or 15 % of the run, if larger)
+    double rise_tolerance_m = 0.01;     ///< [m] |rise_a - rise_b| (or 5 % of the rise, if larger)
+    double run_tolerance_m = 0.03;      ///< [m] |run_a - run_b| (or 10 % of the run, if larger)
     double width_tolerance_m = 0.30;    ///< [m] |width_a - width_b| (partial edges read short)
     double turn_tolerance_deg = 5.0;    ///< [deg] mean turn per step (0 straight, spirals turn)
     int min_overlap_steps = 1;          ///< [-] nosings a hypothesis must pair within one flight

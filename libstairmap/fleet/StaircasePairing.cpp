@@ -97,8 +97,8 @@ double meanTurnPerStep(const Staircase& stairs) {
 }
 
 bool shapesAgree(const Staircase& a, const Staircase& b, const AlignmentParams& p) {
-    return within(a.step_height, b.step_height, p.rise_tolerance_m, 0.10) &&
-           within(a.step_depth, b.step_depth, p.run_tolerance_m, 0.15) &&
+    return within(a.step_height, b.step_height, p.rise_tolerance_m, 0.05) &&
+           within(a.step_depth, b.step_depth, p.run_tolerance_m, 0.10) &&
            within(a.step_width, b.step_width, p.width_tolerance_m, 0.0) &&
            std::abs(meanTurnPerStep(a) - meanTurnPerStep(b)) <= p.turn_tolerance_deg * kDegToRad;
 }
