@@ -13,7 +13,8 @@
 namespace stairmap::io {
 
 constexpr unsigned char kPgmFree = 254, kPgmOccupied = 0, kPgmUnknown = 205;
-constexpr double kOccupiedThresh = 0.65, kFreeThresh = 0.25;
+// map_saver's thresholds: unknown (205) reads as p = 50 / 255 = 0.196078, just above free_thresh.
+constexpr double kOccupiedThresh = 0.65, kFreeThresh = 0.196;
 
 /// The PGM bytes of a grid (header "P5\n<w> <h>\n255\n", rows from the highest y down).
 std::string pgmBytes(const exporting::FloorGrid& grid);
