@@ -61,7 +61,8 @@ std::map<int, FloorGrid> floorGrids(const map::VoxelMap& voxels, const std::vect
     exporting::FloorRasterParams params;
     params.resolution_m = voxels.resolution();
     params.robot_height_m = 0.0;  // the tallest robot decides what blocks a cell
-    for (const auto& p : profiles) params.robot_height_m = std::max(params.robot_height_m, p.height_m);
+    for (const auto& p : profiles)
+        params.robot_height_m = std::max(params.robot_height_m, p.height_m);
     const PointCloud centres = voxels.occupiedVoxelCentres();
     std::map<int, FloorGrid> grids;
     for (const Floor& f : floors) grids[f.id] = exporting::rasteriseFloor(centres, f.z, params);
@@ -110,7 +111,9 @@ int runExport(const ExportOptions& opt) {
         exporting::buildFloorGraph(landmarks.staircases(), landmarks.floors(), grids, profiles);
 
     fs::create_directories(opt.out);
-    const auto outPath = [&opt](const std::string& name) { return (fs::path(opt.out) / name).string(); };
+    const auto outPath = [&opt](const std::string& name) {
+        return (fs::path(opt.out) / name).string();
+    };
     io::writeTextFileAtomic(outPath("graph.json"),
                             io::graphToJson(graph, profiles, opt.map_dir).dump(2) + "\n");
     io::writeTextFileAtomic(outPath("graph.geojson"), io::graphToGeoJson(graph).dump(2) + "\n");
@@ -136,15 +139,18 @@ Command addExportCommand(CLI::App& app) {
     auto opt = std::make_shared<ExportOptions>();
     Command command;
     command.cli = app.add_subcommand(
-        "export", "Stairs for planners from a `stairmap map` output directory (landmarks.json,\n"
-                  "map.bt): graph.json, graph.geojson (Nav2 Route Server), per floor\n"
-                  "floor_<id>.pgm/.yaml and floor_<id>_stairs.pgm/.yaml (map_server format),\n"
-                  "staircases_spot.json (Spot StaircaseWithLandings). docs/export.md.\n"
-                  "Exit codes: 0 ok; 2 bad arguments/input (one line naming the file).");
+        "export",
+        "Stairs for planners from a `stairmap map` output directory (landmarks.json,\n"
+        "map.bt): graph.json, graph.geojson (Nav2 Route Server), per floor\n"
+        "floor_<id>.pgm/.yaml and floor_<id>_stairs.pgm/.yaml (map_server format),\n"
+        "staircases_spot.json (Spot StaircaseWithLandings). docs/export.md.\n"
+        "Exit codes: 0 ok; 2 bad arguments/input (one line naming the file).");
     command.cli->add_option("map_dir", opt->map_dir, "output directory of `stairmap map`")
         ->required();
-    command.cli->add_option("--robot", opt->robots, "robot profile INI ([robot] section; "
-                            "config/robots/*.ini); repeat for several robots")
+    command.cli
+        ->add_option("--robot", opt->robots,
+                     "robot profile INI ([robot] section; "
+                     "config/robots/*.ini); repeat for several robots")
         ->required();
     command.cli->add_option("--out", opt->out, "output directory (created if needed)")->required();
     command.cli->add_flag("--quiet", opt->quiet, "no summary on stdout");

@@ -20,7 +20,9 @@ bool rectangleHas(const FloorGrid& grid, Cell wanted, const Eigen::Vector2d& cen
                   const Eigen::Vector2d& axis, double half_length, double half_width) {
     const double reach = std::hypot(half_length, half_width);
     const double r = grid.resolution_m;
-    const auto index = [r](double v, double origin) { return static_cast<int>(std::floor((v - origin) / r)); };
+    const auto index = [r](double v, double origin) {
+        return static_cast<int>(std::floor((v - origin) / r));
+    };
     const int x0 = std::max(0, index(centre.x() - reach, grid.origin_x));
     const int y0 = std::max(0, index(centre.y() - reach, grid.origin_y));
     const int x1 = std::min(grid.width - 1, index(centre.x() + reach, grid.origin_x));
@@ -48,8 +50,8 @@ std::vector<double> lateralOffsets(double cell, double limit) {
 
 }  // namespace
 
-bool rectangleClear(const FloorGrid& grid, const Eigen::Vector2d& centre, const Eigen::Vector2d& axis,
-                    double half_length, double half_width) {
+bool rectangleClear(const FloorGrid& grid, const Eigen::Vector2d& centre,
+                    const Eigen::Vector2d& axis, double half_length, double half_width) {
     return !rectangleHas(grid, Cell::Occupied, centre, axis, half_length, half_width);
 }
 

@@ -11,10 +11,10 @@ namespace stairmap::exporting {
 
 struct ApproachPose {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< [m] world, z on the floor surface
-    double yaw_rad = 0.0;       ///< facing the flight, counter-clockwise from world +x
-    bool checked = false;       ///< a floor map was there to check it against
-    bool clear = false;         ///< no occupied cell under the footprint + clearance (if checked)
-    bool on_seen_floor = false; ///< seen floor surface under its footprint (if checked)
+    double yaw_rad = 0.0;        ///< facing the flight, counter-clockwise from world +x
+    bool checked = false;        ///< a floor map was there to check it against
+    bool clear = false;          ///< no occupied cell under the footprint + clearance (if checked)
+    bool on_seen_floor = false;  ///< seen floor surface under its footprint (if checked)
 };
 
 struct ApproachParams {
@@ -38,8 +38,8 @@ ApproachPose findApproach(const FloorGrid* grid, const Eigen::Vector2d& edge_xy,
 
 /// True if no Occupied cell centre lies inside the rectangle centred at `centre`, with half sizes
 /// (half_length along `axis`, half_width across it).
-bool rectangleClear(const FloorGrid& grid, const Eigen::Vector2d& centre, const Eigen::Vector2d& axis,
-                    double half_length, double half_width);
+bool rectangleClear(const FloorGrid& grid, const Eigen::Vector2d& centre,
+                    const Eigen::Vector2d& axis, double half_length, double half_width);
 /// True if some Free cell centre lies inside that rectangle.
 bool rectangleSeesFloor(const FloorGrid& grid, const Eigen::Vector2d& centre,
                         const Eigen::Vector2d& axis, double half_length, double half_width);

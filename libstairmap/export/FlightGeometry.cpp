@@ -93,7 +93,8 @@ void extendToFloors(FlightGeometry& g, double bottom_z, double top_z) {
         end.z() += dz;
         g.length_m += std::abs(dz / g.rise_m) * step_length;
     };
-    const int first_run = g.mid_landings.empty() ? g.risers : 0;  // only the whole flight is one run
+    const int first_run =
+        g.mid_landings.empty() ? g.risers : 0;  // only the whole flight is one run
     const auto rises = [&g](double dz) { return static_cast<int>(std::lround(dz / g.rise_m)); };
     if (std::isfinite(bottom_z) && g.bottom.z() - bottom_z > 0.5 * g.rise_m) {
         g.inferred_risers_bottom = rises(g.bottom.z() - bottom_z);
@@ -104,16 +105,18 @@ void extendToFloors(FlightGeometry& g, double bottom_z, double top_z) {
         // With both floors known the whole height counts the risers: one rounding, not one per
         // end plus the seen nosings' height errors.
         if (std::isfinite(bottom_z)) {
-            g.inferred_risers_top = std::max(
-                0, rises(top_z - bottom_z) - g.observed_risers - g.inferred_risers_bottom);
+            g.inferred_risers_top =
+                std::max(0, rises(top_z - bottom_z) - g.observed_risers - g.inferred_risers_bottom);
         }
         slide(g.top, top_z - g.top.z());
     }
     const int added = g.inferred_risers_bottom + g.inferred_risers_top;
     g.risers += added;
     // Unseen risers join the runs at the ends they continue (the whole flight without landings).
-    if (first_run > 0) g.max_risers_between_landings += added;
-    else g.max_risers_between_landings += std::max(g.inferred_risers_bottom, g.inferred_risers_top);
+    if (first_run > 0)
+        g.max_risers_between_landings += added;
+    else
+        g.max_risers_between_landings += std::max(g.inferred_risers_bottom, g.inferred_risers_top);
 }
 
 }  // namespace stairmap::exporting

@@ -12,8 +12,8 @@ namespace stairmap::exporting {
 /// A level part of the flight between two runs of steps (a mid-flight landing), or its ends.
 struct Landing {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< [m] world, on the walking surface
-    double length_m = 0.0;  ///< [m] along the flight's uphill heading
-    double width_m = 0.0;   ///< [m] across it
+    double length_m = 0.0;                             ///< [m] along the flight's uphill heading
+    double width_m = 0.0;                              ///< [m] across it
 };
 
 struct FlightGeometry {
@@ -22,12 +22,12 @@ struct FlightGeometry {
     /// [m] sample standard deviations of the per-step rises, runs and edge lengths (0 with
     /// fewer than two values): how much the steps disagree with the mean.
     double rise_std_m = 0.0, run_std_m = 0.0, width_std_m = 0.0;
-    int risers = 0;                     ///< nosings = risers (the top nosing is the upper floor's edge)
+    int risers = 0;  ///< nosings = risers (the top nosing is the upper floor's edge)
     int max_risers_between_landings = 0;
-    int observed_risers = 0;            ///< nosings the landmark holds (risers minus the inferred)
-    int inferred_risers_bottom = 0;     ///< risers added below the lowest seen one (extendToFloors)
-    int inferred_risers_top = 0;        ///< risers added above the highest seen one
-    double heading_rad = 0.0;           ///< uphill direction, counter-clockwise from world +x
+    int observed_risers = 0;         ///< nosings the landmark holds (risers minus the inferred)
+    int inferred_risers_bottom = 0;  ///< risers added below the lowest seen one (extendToFloors)
+    int inferred_risers_top = 0;     ///< risers added above the highest seen one
+    double heading_rad = 0.0;        ///< uphill direction, counter-clockwise from world +x
     Eigen::Vector3d bottom = Eigen::Vector3d::Zero();  ///< [m] foot of the first riser (centre)
     Eigen::Vector3d top = Eigen::Vector3d::Zero();     ///< [m] centre of the top nosing
     double length_m = 0.0;              ///< [m] 3D length of the flight, bottom to top

@@ -13,7 +13,7 @@ struct FlightEnds {
 };
 
 class GraphBuilder {
-public:
+  public:
     GraphBuilder(const std::map<int, FloorGrid>& grids, const std::vector<RobotProfile>& profiles,
                  const GraphParams& params)
         : grids_(grids), profiles_(profiles), params_(params) {}
@@ -48,14 +48,15 @@ public:
         return std::move(graph_);
     }
 
-private:
+  private:
     struct Pending {
         const StaircaseLandmark& landmark;
         FlightGeometry flight;
         int bottom_node, top_node;
     };
 
-    Eigen::Vector4d floorExtent(const Floor& f, const std::vector<StaircaseLandmark>& stairs) const {
+    Eigen::Vector4d floorExtent(const Floor& f,
+                                const std::vector<StaircaseLandmark>& stairs) const {
         const auto grid = grids_.find(f.id);
         if (grid != grids_.end()) {
             if (const auto e = freeExtent(grid->second)) return *e;
@@ -105,12 +106,13 @@ private:
         const Eigen::Vector2d up = headingVector(p.flight.heading_rad);
         const ApproachPose at_bottom = findApproach(gridFor(bottom), p.flight.bottom.head<2>(), -up,
                                                     bottom.z, robot, params_.approach);
-        const ApproachPose at_top = findApproach(gridFor(top), p.flight.top.head<2>(), up, top.z,
-                                                 robot, params_.approach);
+        const ApproachPose at_top =
+            findApproach(gridFor(top), p.flight.top.head<2>(), up, top.z, robot, params_.approach);
         EdgeRobot r;
         r.robot = robot.name;
         r.verdict = judgeFlight(p.flight, robot, travel);
-        if (at_bottom.checked && !at_bottom.clear) r.verdict.refuse("no clear approach at the bottom");
+        if (at_bottom.checked && !at_bottom.clear)
+            r.verdict.refuse("no clear approach at the bottom");
         if (at_top.checked && !at_top.clear) r.verdict.refuse("no clear approach at the top");
         r.start = travel == Travel::Up ? at_bottom : at_top;
         r.goal = travel == Travel::Up ? at_top : at_bottom;
@@ -126,8 +128,8 @@ private:
         e.to = travel == Travel::Up ? p.top_node : p.bottom_node;
         e.flight = p.flight;
         e.length_m = p.flight.length_m;
-        e.cost = e.length_m *
-                 (travel == Travel::Up ? params_.up_cost_factor : params_.down_cost_factor);
+        e.cost =
+            e.length_m * (travel == Travel::Up ? params_.up_cost_factor : params_.down_cost_factor);
         for (const RobotProfile& robot : profiles_) e.robots.push_back(judge(p, travel, robot));
         e.confirmed = p.landmark.confirmed;
         e.observations = p.landmark.observations;
@@ -146,7 +148,8 @@ private:
 
 }  // namespace
 
-FlightGeometry flightBetweenFloors(const StaircaseLandmark& landmark, const std::vector<Floor>& floors) {
+FlightGeometry flightBetweenFloors(const StaircaseLandmark& landmark,
+                                   const std::vector<Floor>& floors) {
     FlightGeometry g = measureFlight(landmark);
     const auto heightOf = [&floors](int id) {
         for (const Floor& f : floors) {

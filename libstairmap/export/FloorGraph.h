@@ -19,12 +19,13 @@
 namespace stairmap::exporting {
 
 struct GraphNode {
-    int id = -1;             ///< unique among nodes and edges (Nav2's route graph needs that)
-    int floor_id = -1;       ///< landmarks.json floor id; -1 for an unknown node
-    bool known = true;       ///< false: the end of a flight on no mapped floor
-    double z = 0.0;          ///< [m] floor height (unknown node: the flight end's height)
+    int id = -1;        ///< unique among nodes and edges (Nav2's route graph needs that)
+    int floor_id = -1;  ///< landmarks.json floor id; -1 for an unknown node
+    bool known = true;  ///< false: the end of a flight on no mapped floor
+    double z = 0.0;     ///< [m] floor height (unknown node: the flight end's height)
     Eigen::Vector4d extent = Eigen::Vector4d::Zero();  ///< [m] min x, min y, max x, max y
-    Eigen::Vector2d position = Eigen::Vector2d::Zero(); ///< [m] centre of the extent (a point for GeoJSON)
+    Eigen::Vector2d position =
+        Eigen::Vector2d::Zero();  ///< [m] centre of the extent (a point for GeoJSON)
 };
 
 /// One robot's view of one directed edge.
@@ -40,8 +41,8 @@ struct GraphEdge {
     int staircase_id = -1;
     Travel travel = Travel::Up;
     int from = -1, to = -1;  ///< node ids
-    double length_m = 0.0;   ///< [m] 3D length of the flight (foot of the first riser to top nosing)
-    double cost = 0.0;       ///< length x the direction's cost factor
+    double length_m = 0.0;  ///< [m] 3D length of the flight (foot of the first riser to top nosing)
+    double cost = 0.0;      ///< length x the direction's cost factor
     FlightGeometry flight;
     std::vector<EdgeRobot> robots;  ///< in the order of the profiles
     // Knowledge from the landmark map.
@@ -62,7 +63,8 @@ struct GraphParams {
 };
 
 /// measureFlight + extendToFloors with the heights of the landmark's floors (those in `floors`).
-FlightGeometry flightBetweenFloors(const StaircaseLandmark& landmark, const std::vector<Floor>& floors);
+FlightGeometry flightBetweenFloors(const StaircaseLandmark& landmark,
+                                   const std::vector<Floor>& floors);
 
 /// `grids` maps a floor id to its floor map (missing: approaches are not checked). A blocked
 /// approach (checked and not clear) refuses the edge for that robot. Profiles must be valid.

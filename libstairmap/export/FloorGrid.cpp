@@ -65,8 +65,10 @@ FloorGrid rasteriseFloor(const PointCloud& voxels, double floor_z, const FloorRa
         const auto cell = grid.cellOf(v.x(), v.y());
         if (!cell) continue;
         Cell& c = grid.at(cell->first, cell->second);
-        if (obstacle) c = Cell::Occupied;
-        else if (c == Cell::Unknown) c = Cell::Free;
+        if (obstacle)
+            c = Cell::Occupied;
+        else if (c == Cell::Unknown)
+            c = Cell::Free;
     }
     return grid;
 }

@@ -16,12 +16,12 @@ namespace stairmap::exporting {
 enum class Cell : std::uint8_t { Unknown = 0, Free = 1, Occupied = 2 };
 
 struct FloorGrid {
-    double floor_z = 0.0;       ///< [m] world height of the walking surface
-    double origin_x = 0.0;      ///< [m] world x of the lower-left corner of cell (0, 0)
-    double origin_y = 0.0;      ///< [m] world y of that corner
-    double resolution_m = 0.05; ///< [m] cell edge
-    int width = 0, height = 0;  ///< cells along x and y
-    std::vector<Cell> cells;    ///< row-major, row 0 = lowest y
+    double floor_z = 0.0;        ///< [m] world height of the walking surface
+    double origin_x = 0.0;       ///< [m] world x of the lower-left corner of cell (0, 0)
+    double origin_y = 0.0;       ///< [m] world y of that corner
+    double resolution_m = 0.05;  ///< [m] cell edge
+    int width = 0, height = 0;   ///< cells along x and y
+    std::vector<Cell> cells;     ///< row-major, row 0 = lowest y
 
     Cell at(int ix, int iy) const { return cells[static_cast<std::size_t>(iy) * width + ix]; }
     Cell& at(int ix, int iy) { return cells[static_cast<std::size_t>(iy) * width + ix]; }
@@ -34,8 +34,8 @@ struct FloorGrid {
 };
 
 struct FloorRasterParams {
-    double resolution_m = 0.05;   ///< [m] cell edge (the export uses the voxel map's resolution)
-    double floor_band_m = 0.1;    ///< [m] voxel centres within +- this of the floor are its surface
+    double resolution_m = 0.05;  ///< [m] cell edge (the export uses the voxel map's resolution)
+    double floor_band_m = 0.1;   ///< [m] voxel centres within +- this of the floor are its surface
     /// [m] obstacles start this high above the floor (lower voxels are floor roughness and noise;
     /// keep it below the lowest riser so that a flight's first steps block the floor map)
     double obstacle_min_height_m = 0.1;

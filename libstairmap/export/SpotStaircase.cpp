@@ -87,18 +87,22 @@ std::vector<SpotStaircase> toSpotStaircases(const StaircaseLandmark& lm, const S
             // The landing between the previous run's top nosing and this run's first riser.
             const Eigen::Vector2d up = headingVector(lm.stairs.heading_rad);
             const double gap = (lm.stairs.steps[runs[r].first].centre() -
-                                lm.stairs.steps[runs[r].first - 1].centre()).head<2>().dot(up);
+                                lm.stairs.steps[runs[r].first - 1].centre())
+                                   .head<2>()
+                                   .dot(up);
             mid = SpotLanding{Eigen::Vector3d::Zero(), 0.5 * gap, 0.5 * lm.stairs.step_width};
         }
-        SpotStaircase st = spotRun(lm, runs[r].first, runs[r].second, params, mid ? &*mid : nullptr);
+        SpotStaircase st =
+            spotRun(lm, runs[r].first, runs[r].second, params, mid ? &*mid : nullptr);
         st.id = "stairmap-" + std::to_string(lm.id) + "-" + std::to_string(r);
         st.confirmed = lm.confirmed;
         if (r + 1 < runs.size()) {
             // The top landing is the mid-flight landing that follows.
             const Eigen::Vector2d up = headingVector(lm.stairs.heading_rad);
             const std::size_t next = runs[r + 1].first;
-            const double gap = (lm.stairs.steps[next].centre() -
-                                lm.stairs.steps[next - 1].centre()).head<2>().dot(up);
+            const double gap = (lm.stairs.steps[next].centre() - lm.stairs.steps[next - 1].centre())
+                                   .head<2>()
+                                   .dot(up);
             st.top_landing.extent_x_m = 0.5 * gap;
             st.top_landing.centre.x() = st.steps.back().point.x() + 0.5 * gap;
         }

@@ -16,7 +16,8 @@ namespace stairmap::exporting {
 
 struct SpotStep {
     Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< [m] nosing centre, stairs frame
-    Eigen::Vector2d north = Eigen::Vector2d::UnitX(); ///< unit, up the stairs, perpendicular to the edge
+    Eigen::Vector2d north =
+        Eigen::Vector2d::UnitX();  ///< unit, up the stairs, perpendicular to the edge
     double width_m = 0.0;
 };
 
@@ -26,9 +27,9 @@ struct SpotLanding {
 };
 
 struct SpotStaircase {
-    std::string id;                       ///< "stairmap-<landmark id>-<run>"
+    std::string id;                                          ///< "stairmap-<landmark id>-<run>"
     Eigen::Vector3d origin_world = Eigen::Vector3d::Zero();  ///< [m] world position of the origin
-    double yaw_rad = 0.0;                 ///< rotation of the stairs frame about world Z
+    double yaw_rad = 0.0;  ///< rotation of the stairs frame about world Z
     double average_rise_m = 0.0, average_run_m = 0.0, average_width_m = 0.0;
     std::vector<SpotStep> steps;
     SpotLanding bottom_landing, top_landing;
@@ -36,7 +37,7 @@ struct SpotStaircase {
 };
 
 struct SpotParams {
-    double landing_length_m = 1.0;  ///< [m] depth of the end landings (nothing measures them)
+    double landing_length_m = 1.0;    ///< [m] depth of the end landings (nothing measures them)
     double landing_run_factor = 1.8;  ///< [-] a nosing spacing above this x the run is a landing
 };
 

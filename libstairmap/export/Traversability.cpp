@@ -21,7 +21,8 @@ Verdict judgeFlight(const FlightGeometry& f, const RobotProfile& p, Travel trave
     Verdict v;
     if (travel == Travel::Up && !p.can_ascend) v.refuse("cannot climb stairs up");
     if (travel == Travel::Down && !p.can_descend) v.refuse("cannot go down stairs");
-    if (f.rise_m > p.max_rise_m + kSlack) v.refuse(format("rise %.3f > %.3f m", f.rise_m, p.max_rise_m));
+    if (f.rise_m > p.max_rise_m + kSlack)
+        v.refuse(format("rise %.3f > %.3f m", f.rise_m, p.max_rise_m));
     if (f.run_m < p.min_run_m - kSlack) v.refuse(format("run %.3f < %.3f m", f.run_m, p.min_run_m));
     if (f.width_m < p.min_width_m - kSlack) {
         v.refuse(format("width %.2f < %.2f m", f.width_m, p.min_width_m));

@@ -5,9 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <set>
-
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "CliRunner.h"
 #include "export/RobotProfile.h"
@@ -37,17 +36,17 @@ json readJsonFile(const std::string& path) {
 }
 
 class ExportTwoFloor : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() {
         dir_ = cliScratchDir("export", "two_floor." + std::to_string(::getpid()));
         const std::string ds = kSrc + "/datasets/two_floor/";
-        const CliResult map = runStairmap("map '" + ds + "two_floor.rawlog' --poses '" + ds +
-                                              "poses.tum' --config '" + kSrc +
-                                              "/config/sim_legged_vlp16.ini' --out '" + dir_ +
-                                              "/map' --quiet", dir_);
+        const CliResult map = runStairmap(
+            "map '" + ds + "two_floor.rawlog' --poses '" + ds + "poses.tum' --config '" + kSrc +
+                "/config/sim_legged_vlp16.ini' --out '" + dir_ + "/map' --quiet",
+            dir_);
         ASSERT_EQ(map.exit_code, 0) << map.err;
-        result_ = runStairmap("export '" + dir_ + "/map'" + robotArgs() + " --out '" + dir_ +
-                                  "/export'", dir_);
+        result_ = runStairmap(
+            "export '" + dir_ + "/map'" + robotArgs() + " --out '" + dir_ + "/export'", dir_);
         ASSERT_EQ(result_.exit_code, 0) << result_.err;
         graph_ = readJsonFile(dir_ + "/export/graph.json");
         gt_ = readJsonFile(ds + "gt.json");
@@ -89,7 +88,8 @@ TEST_F(ExportTwoFloor, TwoFloorsJoinedByTwoFlightsBothWays) {
         }
     }
     ASSERT_EQ(directions.size(), 2u);
-    for (const auto& [id, d] : directions) EXPECT_EQ(d, (std::set<std::string>{"up", "down"})) << id;
+    for (const auto& [id, d] : directions)
+        EXPECT_EQ(d, (std::set<std::string>{"up", "down"})) << id;
 }
 
 /// The verdict the ground-truth geometry implies for a profile (limits inclusive).
@@ -98,7 +98,8 @@ bool impliedVerdict(const exporting::RobotProfile& p, const json& stair, bool up
     const double slope = std::atan2(rise, run) * 180.0 / M_PI;
     const int risers = stair.at("num_risers");
     return (up ? p.can_ascend : p.can_descend) && rise <= p.max_rise_m && run >= p.min_run_m &&
-           width >= p.min_width_m && slope <= p.max_slope_deg && risers <= p.max_steps_without_landing;
+           width >= p.min_width_m && slope <= p.max_slope_deg &&
+           risers <= p.max_steps_without_landing;
 }
 
 TEST_F(ExportTwoFloor, VerdictsThePresetsImply) {
@@ -106,7 +107,8 @@ TEST_F(ExportTwoFloor, VerdictsThePresetsImply) {
         const auto profile = io::loadRobotProfile(presetPath(name));
         for (const json& e : graph_.at("edges")) {
             const bool up = e.at("direction") == "up";
-            // Both bundled flights share one geometry (gt.json); each preset is far from its limits.
+            // Both bundled flights share one geometry (gt.json); each preset is far from its
+            // limits.
             const bool expected = impliedVerdict(profile, gt_.at("staircases").at(0), up);
             const json& r = e.at("robots").at(name);
             EXPECT_EQ(r.at("traversable").get<bool>(), expected)
@@ -182,7 +184,8 @@ TEST_F(ExportTwoFloor, GeoJsonAndSpotFiles) {
     double best = 1e9;
     for (const json& s : spot.at("staircases")) {
         const json& p = s.at("staircase").at("stair_tform").at("frame_tform_stairs").at("position");
-        best = std::min(best, std::hypot(p.at("x").get<double>() - 2.0, p.at("y").get<double>() - 0.8));
+        best = std::min(best,
+                        std::hypot(p.at("x").get<double>() - 2.0, p.at("y").get<double>() - 0.8));
     }
     EXPECT_LT(best, 0.3);
     EXPECT_NE(result_.out.find("2 nodes, 4 edges"), std::string::npos) << result_.out;
@@ -205,7 +208,8 @@ TEST(ExportCli, BadInputIsOneLineAndExitTwo) {
     // landmarks.json present, map.bt missing.
     fs::create_directories(dir + "/nobt");
     std::ofstream(dir + "/nobt/landmarks.json") << "{}";
-    expectOneLineNaming(runStairmap("export '" + dir + "/nobt'" + robot, dir), dir + "/nobt/map.bt");
+    expectOneLineNaming(runStairmap("export '" + dir + "/nobt'" + robot, dir),
+                        dir + "/nobt/map.bt");
 
     // A profile with a negative limit (checked before the map is read).
     fs::create_directories(dir + "/withbt");
@@ -213,8 +217,8 @@ TEST(ExportCli, BadInputIsOneLineAndExitTwo) {
     std::ofstream(dir + "/withbt/map.bt") << "x";
     const std::string bad = dir + "/negative.ini";
     std::ofstream(bad) << "[robot]\nmin_width_m = -0.5\n";
-    const CliResult r = runStairmap("export '" + dir + "/withbt' --robot '" + bad + "' --out '" +
-                                        dir + "/out'", dir);
+    const CliResult r = runStairmap(
+        "export '" + dir + "/withbt' --robot '" + bad + "' --out '" + dir + "/out'", dir);
     expectOneLineNaming(r, bad);
     EXPECT_NE(r.err.find("min_width_m"), std::string::npos) << r.err;
 }

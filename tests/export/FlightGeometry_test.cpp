@@ -1,10 +1,11 @@
 // Flight measurements from canonical landmarks with known geometry.
+#include "export/FlightGeometry.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "SyntheticLandmarks.h"
-#include "export/FlightGeometry.h"
 
 namespace stairmap::exporting {
 namespace {
@@ -20,7 +21,8 @@ TEST(FlightGeometry, StraightFlight) {
     EXPECT_TRUE(g.mid_landings.empty());
     EXPECT_NEAR(g.slope_deg, std::atan2(0.17, 0.28) * 180.0 / M_PI, 1e-9);
     EXPECT_LT((g.bottom - f.foot).norm(), 1e-9);
-    const Eigen::Vector3d top = f.foot + Eigen::Vector3d(std::cos(0.7), std::sin(0.7), 0) * 11 * 0.28 +
+    const Eigen::Vector3d top = f.foot +
+                                Eigen::Vector3d(std::cos(0.7), std::sin(0.7), 0) * 11 * 0.28 +
                                 Eigen::Vector3d(0, 0, 12 * 0.17);
     EXPECT_LT((g.top - top).norm(), 1e-9);
     EXPECT_NEAR(g.length_m, 0.17 + 11 * std::hypot(0.17, 0.28), 1e-9);

@@ -1,11 +1,12 @@
 // Floor graphs from synthetic landmark maps with known stairs: nodes, edges, verdicts, approaches.
+#include "export/FloorGraph.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
 
 #include "SyntheticLandmarks.h"
-#include "export/FloorGraph.h"
 
 namespace stairmap::exporting {
 namespace {
@@ -87,7 +88,7 @@ TEST(FloorGraph, VerdictsPerRobotBothWays) {
         EXPECT_EQ(a.robots[0].verdict.reasons, std::vector<std::string>{"rise 0.188 > 0.180 m"});
         EXPECT_TRUE(a.robots[1].verdict.traversable);
         EXPECT_TRUE(edgeOf(g, 7, t).robots[0].verdict.traversable);  // 0.17 m rises
-        EXPECT_FALSE(a.robots[0].start.checked);  // no floor maps given
+        EXPECT_FALSE(a.robots[0].start.checked);                     // no floor maps given
     }
 }
 

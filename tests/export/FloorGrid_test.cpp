@@ -1,11 +1,12 @@
 // Floor rasterisation and stair masks on voxel scenes with known free, occupied and unseen areas.
+#include "export/FloorGrid.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "SyntheticLandmarks.h"
-#include "export/FloorGrid.h"
 #include "export/StairMask.h"
 
 namespace stairmap::exporting {
@@ -18,7 +19,8 @@ Cell cellAt(const FloorGrid& g, double x, double y) {
 }
 
 /// Floor 0 (z = 0) over [0, 4] x [0, 3] with a hole at [2.5, 3] x [2, 2.5] that was never seen,
-/// a 0.5 m box on it, a slab at 2.5 m (above any robot) and a floor 1 at z = 3 over [0, 2] x [0, 3].
+/// a 0.5 m box on it, a slab at 2.5 m (above any robot) and a floor 1 at z = 3 over [0, 2] x [0,
+/// 3].
 PointCloud scene() {
     PointCloud c;
     test::addFloorVoxels(c, 0.0, 2.5, 0.0, 3.0, 0.0);
@@ -37,9 +39,9 @@ TEST(FloorGrid, FreeOccupiedUnknown) {
     const FloorGrid g = rasteriseFloor(scene(), 0.0, p);
     EXPECT_EQ(cellAt(g, 0.52, 0.52), Cell::Free);
     EXPECT_EQ(cellAt(g, 3.52, 0.52), Cell::Free);
-    EXPECT_EQ(cellAt(g, 1.22, 1.22), Cell::Occupied);   // the box
-    EXPECT_EQ(cellAt(g, 2.72, 2.22), Cell::Unknown);    // the hole
-    EXPECT_EQ(cellAt(g, -0.22, 1.0), Cell::Unknown);    // the margin
+    EXPECT_EQ(cellAt(g, 1.22, 1.22), Cell::Occupied);  // the box
+    EXPECT_EQ(cellAt(g, 2.72, 2.22), Cell::Unknown);   // the hole
+    EXPECT_EQ(cellAt(g, -0.22, 1.0), Cell::Unknown);   // the margin
     // The slab at 2.5 m is above the robot: nothing on floor 0 is blocked by it.
     int occupied = 0;
     for (Cell c : g.cells) occupied += c == Cell::Occupied;

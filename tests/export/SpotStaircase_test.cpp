@@ -1,10 +1,11 @@
 // Spot's staircase convention: origin at the bottom centre of the first riser, X up the stairs.
+#include "export/SpotStaircase.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "SyntheticLandmarks.h"
-#include "export/SpotStaircase.h"
 
 namespace stairmap::exporting {
 namespace {

@@ -14,13 +14,14 @@ struct FlightSpec {
     double heading_rad = 0.0;                        ///< uphill
     double rise = 0.17, run = 0.28, width = 1.0;     ///< [m]
     int risers = 10;
-    int landing_after = -1;      ///< a mid landing after this many risers (-1: none)
-    double landing_length = 1.2; ///< [m] nosing-to-next-riser spacing at the landing
+    int landing_after = -1;       ///< a mid landing after this many risers (-1: none)
+    double landing_length = 1.2;  ///< [m] nosing-to-next-riser spacing at the landing
 };
 
 /// A confirmed canonical landmark: nosing k (0-based) at foot + along * (k * run, plus the landing)
 /// + z * (k + 1) * rise; edges start on the left facing uphill (core/Staircase.h).
-inline StaircaseLandmark makeLandmark(int id, const FlightSpec& f, int bottom_floor, int top_floor) {
+inline StaircaseLandmark makeLandmark(int id, const FlightSpec& f, int bottom_floor,
+                                      int top_floor) {
     StaircaseLandmark lm;
     lm.id = id;
     const Eigen::Vector3d along(std::cos(f.heading_rad), std::sin(f.heading_rad), 0.0);
@@ -77,7 +78,8 @@ inline void addBoxVoxels(PointCloud& cloud, const Eigen::Vector3d& lo, const Eig
     for (double x = lo.x() + 0.5 * res; x < hi.x(); x += res) {
         for (double y = lo.y() + 0.5 * res; y < hi.y(); y += res) {
             for (double z = lo.z() + 0.5 * res; z < hi.z(); z += res) {
-                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(z));
             }
         }
     }

@@ -1,10 +1,10 @@
 // Verdicts at and across each limit of a profile, and the direction permissions.
+#include "export/Traversability.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <functional>
-
-#include "export/Traversability.h"
 
 namespace stairmap::exporting {
 namespace {
@@ -46,7 +46,8 @@ TEST_P(AtAndAcrossLimit, PassesAtLimitFailsAcross) {
         FlightGeometry at = easyFlight();
         c.set(at, c.limit);
         const Verdict ok = judgeFlight(at, profile(), t);
-        EXPECT_TRUE(ok.traversable) << c.name << " at the limit: " << ::testing::PrintToString(ok.reasons);
+        EXPECT_TRUE(ok.traversable)
+            << c.name << " at the limit: " << ::testing::PrintToString(ok.reasons);
 
         FlightGeometry across = easyFlight();
         c.set(across, c.limit + c.across);
@@ -59,13 +60,19 @@ TEST_P(AtAndAcrossLimit, PassesAtLimitFailsAcross) {
 
 INSTANTIATE_TEST_SUITE_P(
     EachLimit, AtAndAcrossLimit,
-    ::testing::Values(
-        LimitCase{"rise", [](FlightGeometry& f, double v) { f.rise_m = v; }, 0.18, 0.01, "rise 0.190 > 0.180 m"},
-        LimitCase{"run", [](FlightGeometry& f, double v) { f.run_m = v; }, 0.25, -0.01, "run 0.240 < 0.250 m"},
-        LimitCase{"width", [](FlightGeometry& f, double v) { f.width_m = v; }, 0.80, -0.05, "width 0.75 < 0.80 m"},
-        LimitCase{"slope", [](FlightGeometry& f, double v) { f.slope_deg = v; }, 36.0, 0.5, "slope 36.5 > 36.0 deg"},
-        LimitCase{"risers", [](FlightGeometry& f, double v) { f.max_risers_between_landings = static_cast<int>(v); },
-                  12, 1, "13 risers without a landing > 12"}),
+    ::testing::Values(LimitCase{"rise", [](FlightGeometry& f, double v) { f.rise_m = v; }, 0.18,
+                                0.01, "rise 0.190 > 0.180 m"},
+                      LimitCase{"run", [](FlightGeometry& f, double v) { f.run_m = v; }, 0.25,
+                                -0.01, "run 0.240 < 0.250 m"},
+                      LimitCase{"width", [](FlightGeometry& f, double v) { f.width_m = v; }, 0.80,
+                                -0.05, "width 0.75 < 0.80 m"},
+                      LimitCase{"slope", [](FlightGeometry& f, double v) { f.slope_deg = v; }, 36.0,
+                                0.5, "slope 36.5 > 36.0 deg"},
+                      LimitCase{"risers",
+                                [](FlightGeometry& f, double v) {
+                                    f.max_risers_between_landings = static_cast<int>(v);
+                                },
+                                12, 1, "13 risers without a landing > 12"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(Traversability, DirectionPermissions) {

@@ -13,10 +13,18 @@ namespace {
 constexpr const char* kSection = "robot";
 
 const std::set<std::string>& knownKeys() {
-    static const std::set<std::string> keys = {
-        "name", "max_rise_m", "min_run_m", "min_width_m", "max_slope_deg",
-        "max_steps_without_landing", "can_ascend", "can_descend", "footprint_length_m",
-        "footprint_width_m", "clearance_m", "height_m"};
+    static const std::set<std::string> keys = {"name",
+                                               "max_rise_m",
+                                               "min_run_m",
+                                               "min_width_m",
+                                               "max_slope_deg",
+                                               "max_steps_without_landing",
+                                               "can_ascend",
+                                               "can_descend",
+                                               "footprint_length_m",
+                                               "footprint_width_m",
+                                               "clearance_m",
+                                               "height_m"};
     return keys;
 }
 

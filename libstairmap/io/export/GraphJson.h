@@ -13,8 +13,8 @@ namespace stairmap::io {
 
 constexpr int kGraphJsonVersion = 1;
 
-/// The document: {"version", "frame", "generator", "source", "robots":[profiles], "nodes", "edges"}.
-/// `source` names the map directory it was made from.
+/// The document: {"version", "frame", "generator", "source", "robots":[profiles], "nodes",
+/// "edges"}. `source` names the map directory it was made from.
 nlohmann::json graphToJson(const exporting::FloorGraph& graph,
                            const std::vector<exporting::RobotProfile>& profiles,
                            const std::string& source);

@@ -10,21 +10,25 @@ namespace {
 
 unsigned char pixel(exporting::Cell c) {
     switch (c) {
-        case exporting::Cell::Free: return kPgmFree;
-        case exporting::Cell::Occupied: return kPgmOccupied;
-        default: return kPgmUnknown;
+        case exporting::Cell::Free:
+            return kPgmFree;
+        case exporting::Cell::Occupied:
+            return kPgmOccupied;
+        default:
+            return kPgmUnknown;
     }
 }
 
 }  // namespace
 
 std::string pgmBytes(const exporting::FloorGrid& grid) {
-    std::string out = "P5\n" + std::to_string(grid.width) + " " + std::to_string(grid.height) +
-                      "\n255\n";
+    std::string out =
+        "P5\n" + std::to_string(grid.width) + " " + std::to_string(grid.height) + "\n255\n";
     out.reserve(out.size() + grid.cells.size());
     // map_server puts the image's bottom-left pixel at `origin`: the last row is the lowest y.
     for (int iy = grid.height - 1; iy >= 0; --iy) {
-        for (int ix = 0; ix < grid.width; ++ix) out.push_back(static_cast<char>(pixel(grid.at(ix, iy))));
+        for (int ix = 0; ix < grid.width; ++ix)
+            out.push_back(static_cast<char>(pixel(grid.at(ix, iy))));
     }
     return out;
 }

@@ -10,8 +10,8 @@ nlohmann::json vec3(const Eigen::Vector3d& v) { return {{"x", v.x()}, {"y", v.y(
 /// SE3Pose of a frame at `p` rotated by `yaw` about Z.
 nlohmann::json se3(const Eigen::Vector3d& p, double yaw) {
     return {{"position", vec3(p)},
-            {"rotation", {{"x", 0.0}, {"y", 0.0}, {"z", std::sin(0.5 * yaw)},
-                          {"w", std::cos(0.5 * yaw)}}}};
+            {"rotation",
+             {{"x", 0.0}, {"y", 0.0}, {"z", std::sin(0.5 * yaw)}, {"w", std::cos(0.5 * yaw)}}}};
 }
 
 nlohmann::json width(double w) {
@@ -21,7 +21,8 @@ nlohmann::json width(double w) {
 
 nlohmann::json landing(const exporting::SpotLanding& l) {
     return {{"stairs_tform_landing_center", se3(l.centre, 0.0)},
-            {"landing_extent_x", l.extent_x_m}, {"landing_extent_y", l.extent_y_m}};
+            {"landing_extent_x", l.extent_x_m},
+            {"landing_extent_y", l.extent_y_m}};
 }
 
 }  // namespace
@@ -35,8 +36,8 @@ nlohmann::json spotStaircaseToJson(const exporting::SpotStaircase& s, const std:
     }
     nlohmann::json staircase = {
         {"knowledge_type", "KNOWLEDGE_TYPE_MAPPED"},
-        {"stair_tform", {{"frame_tform_stairs", se3(s.origin_world, s.yaw_rad)},
-                         {"frame_name", frame}}},
+        {"stair_tform",
+         {{"frame_tform_stairs", se3(s.origin_world, s.yaw_rad)}, {"frame_name", frame}}},
         {"average_rise", s.average_rise_m},
         {"average_run", s.average_run_m},
         {"average_width", width(s.average_width_m)},

@@ -1,14 +1,15 @@
 // Robot profiles from INI files: the three presets load, their verdicts flip exactly at each of
 // their limits, and bad files fail with one message naming the file and the key.
+#include "io/config/RobotProfileConfig.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <algorithm>
 #include <functional>
 
 #include "export/Traversability.h"
-#include "io/config/RobotProfileConfig.h"
 
 namespace stairmap::io {
 namespace {
@@ -65,7 +66,7 @@ FlightGeometry inside(const RobotProfile& p) {
 struct Limit {
     const char* reason_word;  ///< the word the refusal starts with or contains
     std::function<void(FlightGeometry&, const RobotProfile&, double)> set;  ///< at limit + step
-    double step;              ///< towards the failing side
+    double step;  ///< towards the failing side
 };
 
 bool mentions(const exporting::Verdict& v, const std::string& word) {
@@ -75,12 +76,25 @@ bool mentions(const exporting::Verdict& v, const std::string& word) {
 
 TEST(RobotProfileConfig, PresetVerdictsFlipAtEachLimit) {
     const std::vector<Limit> limits = {
-        {"rise ", [](FlightGeometry& f, const RobotProfile& p, double d) { f.rise_m = p.max_rise_m + d; }, 0.005},
-        {"run ", [](FlightGeometry& f, const RobotProfile& p, double d) { f.run_m = p.min_run_m - d; }, 0.005},
-        {"width ", [](FlightGeometry& f, const RobotProfile& p, double d) { f.width_m = p.min_width_m - d; }, 0.01},
-        {"slope ", [](FlightGeometry& f, const RobotProfile& p, double d) { f.slope_deg = p.max_slope_deg + d; }, 0.1},
-        {"without a landing", [](FlightGeometry& f, const RobotProfile& p, double d) {
-             f.max_risers_between_landings = p.max_steps_without_landing + static_cast<int>(d); }, 1.0}};
+        {"rise ",
+         [](FlightGeometry& f, const RobotProfile& p, double d) { f.rise_m = p.max_rise_m + d; },
+         0.005},
+        {"run ",
+         [](FlightGeometry& f, const RobotProfile& p, double d) { f.run_m = p.min_run_m - d; },
+         0.005},
+        {"width ",
+         [](FlightGeometry& f, const RobotProfile& p, double d) { f.width_m = p.min_width_m - d; },
+         0.01},
+        {"slope ",
+         [](FlightGeometry& f, const RobotProfile& p, double d) {
+             f.slope_deg = p.max_slope_deg + d;
+         },
+         0.1},
+        {"without a landing",
+         [](FlightGeometry& f, const RobotProfile& p, double d) {
+             f.max_risers_between_landings = p.max_steps_without_landing + static_cast<int>(d);
+         },
+         1.0}};
     for (const std::string name : {"tracked", "quadruped", "scout"}) {
         const RobotProfile p = loadRobotProfile(preset(name));
         for (const Limit& l : limits) {
@@ -95,7 +109,8 @@ TEST(RobotProfileConfig, PresetVerdictsFlipAtEachLimit) {
                 EXPECT_EQ(v_at.traversable, allowed) << name << " at " << l.reason_word;
                 EXPECT_FALSE(mentions(v_at, l.reason_word)) << name << " at " << l.reason_word;
                 EXPECT_FALSE(v_across.traversable) << name << " across " << l.reason_word;
-                EXPECT_TRUE(mentions(v_across, l.reason_word)) << name << " across " << l.reason_word;
+                EXPECT_TRUE(mentions(v_across, l.reason_word))
+                    << name << " across " << l.reason_word;
             }
         }
     }
@@ -121,7 +136,8 @@ TEST(RobotProfileConfig, BadFilesNameTheFileAndKey) {
 }
 
 TEST(RobotProfileConfig, NameDefaultsToTheFileStem) {
-    EXPECT_EQ(loadRobotProfile(writeIni("my_bot.ini", "[robot]\nmax_rise_m = 0.15\n")).name, "my_bot");
+    EXPECT_EQ(loadRobotProfile(writeIni("my_bot.ini", "[robot]\nmax_rise_m = 0.15\n")).name,
+              "my_bot");
 }
 
 }  // namespace

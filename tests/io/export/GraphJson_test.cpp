@@ -1,5 +1,7 @@
 // graph.json against docs/graph.schema.json, graph.geojson against the rules of Nav2's GeoJSON
 // graph loader, staircases_spot.json against Spot's StaircaseWithLandings field layout.
+#include "io/export/GraphJson.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <set>
 
 #include "export/SyntheticLandmarks.h"
-#include "io/export/GraphJson.h"
 #include "io/export/SpotJson.h"
 #include "io/json/MiniSchemaValidator.h"
 

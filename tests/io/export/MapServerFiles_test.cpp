@@ -1,13 +1,13 @@
 // Floor maps and stair masks written in the map_server format and read back independently.
+#include "io/export/MapServerFiles.h"
+
 #include <gtest/gtest.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <filesystem>
 
-#include <mrpt/maps/COccupancyGridMap2D.h>
-
-#include "export/SyntheticLandmarks.h"
 #include "export/StairMask.h"
-#include "io/export/MapServerFiles.h"
+#include "export/SyntheticLandmarks.h"
 #include "io/export/MapServerReader.h"
 
 namespace stairmap::io {
@@ -46,9 +46,9 @@ TEST(MapServerFiles, FloorMapReadsBackWithWorldCoordinates) {
     EXPECT_EQ(m.occupancyAt(-1.0, 0.7), 0);
     EXPECT_EQ(m.occupancyAt(2.8, 2.3), 0);
     EXPECT_EQ(m.occupancyAt(2.15, 1.15), 100);
-    EXPECT_EQ(m.occupancyAt(0.25, 2.0), -1);   // unseen patch
-    EXPECT_EQ(m.occupancyAt(-1.8, 1.0), -1);   // margin
-    EXPECT_EQ(m.occupancyAt(-2.2, 1.0), -2);   // beyond the margin
+    EXPECT_EQ(m.occupancyAt(0.25, 2.0), -1);  // unseen patch
+    EXPECT_EQ(m.occupancyAt(-1.8, 1.0), -1);  // margin
+    EXPECT_EQ(m.occupancyAt(-2.2, 1.0), -2);  // beyond the margin
     // Every pillar cell and nothing else is occupied.
     int occupied = 0;
     for (unsigned char v : m.pixels) occupied += v == kPgmOccupied;
@@ -63,16 +63,17 @@ TEST(MapServerFiles, StairMaskOnTheKnownFootprint) {
     f.foot = {1.0, 2.0, 0.0};
     f.heading_rad = M_PI / 2;
     const exporting::FloorGrid floor = exporting::rasteriseFloor(c, 0.0, {});
-    saveMapServerMap(dir, "floor_0_stairs",
-                     exporting::stairMask(floor, {exporting::measureFlight(test::makeLandmark(1, f, 0, 1))}));
+    saveMapServerMap(
+        dir, "floor_0_stairs",
+        exporting::stairMask(floor, {exporting::measureFlight(test::makeLandmark(1, f, 0, 1))}));
     const test::MapServerMap m = test::readMapServerMap(dir + "/floor_0_stairs.yaml");
     const double r = m.resolution, y_top = 2.0 + 9 * 0.28;
     int wrong = 0;
     for (double x = -0.9; x < 7.9; x += 0.5 * r) {
         for (double y = -0.9; y < 7.9; y += 0.5 * r) {
             const bool inside = x >= 0.5 && x <= 1.5 && y >= 2.0 && y <= y_top;
-            const double edge = std::min({std::abs(x - 0.5), std::abs(x - 1.5), std::abs(y - 2.0),
-                                          std::abs(y - y_top)});
+            const double edge = std::min(
+                {std::abs(x - 0.5), std::abs(x - 1.5), std::abs(y - 2.0), std::abs(y - y_top)});
             const bool marked = m.occupancyAt(x, y) == 100;
             if (marked != inside && edge > r) ++wrong;
         }
@@ -88,8 +89,8 @@ TEST(MapServerFiles, MrptLoadsTheYaml) {
     const auto grid = mrpt::maps::COccupancyGridMap2D::FromROSMapServerYAML(dir + "/floor_0.yaml");
     EXPECT_NEAR(grid.getResolution(), 0.05, 1e-6);
     EXPECT_NEAR(grid.getXMin(), -2.0, 0.051);
-    EXPECT_GT(grid.getPos(-1.0, 0.7), 0.8);   // free
-    EXPECT_LT(grid.getPos(2.15, 1.15), 0.2);  // the pillar
+    EXPECT_GT(grid.getPos(-1.0, 0.7), 0.8);          // free
+    EXPECT_LT(grid.getPos(2.15, 1.15), 0.2);         // the pillar
     EXPECT_NEAR(grid.getPos(0.25, 2.0), 0.5, 0.15);  // unseen
 }
 

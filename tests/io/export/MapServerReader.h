@@ -26,7 +26,8 @@ struct MapServerMap {
         const int col = static_cast<int>(std::floor((x - origin_x) / resolution));
         const int row_from_bottom = static_cast<int>(std::floor((y - origin_y) / resolution));
         if (col < 0 || row_from_bottom < 0 || col >= width || row_from_bottom >= height) return -2;
-        const unsigned char v = pixels[static_cast<std::size_t>(height - 1 - row_from_bottom) * width + col];
+        const unsigned char v =
+            pixels[static_cast<std::size_t>(height - 1 - row_from_bottom) * width + col];
         const double p = (255.0 - v) / 255.0;
         if (p > occupied_thresh) return 100;
         if (p < free_thresh) return 0;
@@ -83,7 +84,8 @@ inline MapServerMap readMapServerMap(const std::string& yaml_path) {
     if (std::stoi(nextPgmToken(pgm)) != 255) throw std::runtime_error("maxval is not 255");
     pgm.get();  // the single whitespace after maxval
     m.pixels.resize(static_cast<std::size_t>(m.width) * m.height);
-    pgm.read(reinterpret_cast<char*>(m.pixels.data()), static_cast<std::streamsize>(m.pixels.size()));
+    pgm.read(reinterpret_cast<char*>(m.pixels.data()),
+             static_cast<std::streamsize>(m.pixels.size()));
     if (pgm.gcount() != static_cast<std::streamsize>(m.pixels.size())) {
         throw std::runtime_error("PGM pixel data truncated");
     }
