@@ -88,7 +88,10 @@ INSTANTIATE_TEST_SUITE_P(Transforms, KnownTransform,
                          ::testing::Values(Transform4{0, 0, 0, 0}, Transform4{3.0, -2.0, 0.5, 0.7},
                                            Transform4{-10.0, 4.0, -3.0, -1.9},
                                            Transform4{1.0, 1.0, 2.0, M_PI},
-                                           Transform4{0.4, -7.0, 0.0, 3.13}));
+                                           Transform4{0.4, -7.0, 0.0, 3.13}),
+                         [](const ::testing::TestParamInfo<Transform4>& param_info) {
+                             return "case" + std::to_string(param_info.index);
+                         });
 
 TEST(MapAlignment, OneFlightSeenFromTheSameEndIsEnough) {
     FlightSpec f;
