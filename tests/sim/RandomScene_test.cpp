@@ -125,7 +125,9 @@ TEST(RandomScene, DrawsStayInRangesWithTheIntendedShares) {
             }
         }
         two += spec.flights.size() == 2;
-        if (spec.flights.size() == 2) EXPECT_FALSE(footprintsOverlap(spec.flights[0], spec.flights[1], 0.5));
+        if (spec.flights.size() == 2) {
+            EXPECT_FALSE(footprintsOverlap(spec.flights[0], spec.flights[1], 0.5));
+        }
         for (const auto& n : spec.extras) {
             negatives.insert(n.type);
             expectNegativeInRanges(n);
