@@ -15,7 +15,7 @@ DEB_PACKAGES := cmake make g++ \
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench clean
+.PHONY: all deps configure build demo test bench eval clean
 
 all: build
 
@@ -53,6 +53,33 @@ test: build
 
 bench: build
 	@for b in $(BUILD_DIR)/bin/bench_*; do echo "== $$b"; $$b --benchmark_min_time=0.2 || exit 1; done
+
+# Randomised detector benchmark (issue 10; outside `make test`): a dev and a separate check set drawn
+# by `stairmap sim --random`, cached in $(EVAL_DIR)/<set>-seed<S>-n<N>-v<generator version> (a rerun
+# reuses a complete set), then the per-family table of `stairmap eval --detect` for each; the full
+# reports (misses, false positives) go to <set dir>.eval.txt, a breakdown by sensor kind to
+# <set dir>.sensors.txt.
+EVAL_DIR        ?= $(BUILD_DIR)/eval
+EVAL_N          ?= 300
+EVAL_DEV_SEED   ?= 1001
+EVAL_CHECK_SEED ?= 2002
+EVAL_JOBS       ?= 2
+
+eval: build
+	@ver=$$($(STAIRMAP) sim --random-version) || exit 1; \
+	for set in dev:$(EVAL_DEV_SEED) check:$(EVAL_CHECK_SEED); do \
+	  name=$${set%%:*}; seed=$${set##*:}; dir=$(EVAL_DIR)/$$name-seed$$seed-n$(EVAL_N)-v$$ver; \
+	  if [ ! -f $$dir/.complete ]; then \
+	    rm -rf $$dir; \
+	    $(STAIRMAP) sim --random $(EVAL_N) --seed $$seed --jobs $(EVAL_JOBS) --out $$dir -q || exit 1; \
+	    touch $$dir/.complete; \
+	  else echo "stairmap: reusing $$dir"; fi; \
+	  $(STAIRMAP) eval --detect $$dir > $$dir.eval.txt || exit 1; \
+	  $(STAIRMAP) eval --detect $$dir --group-by sensor_kind > $$dir.sensors.txt || exit 1; \
+	  echo "== $$name set (seed $$seed, $(EVAL_N) scenes, generator v$$ver): current detector"; \
+	  sed -n '1,/^all /p' $$dir.eval.txt; \
+	  echo "-- by sensor kind"; sed -n '3,/^all /p' $$dir.sensors.txt; \
+	done
 
 clean:
 	rm -rf $(BUILD_DIR)

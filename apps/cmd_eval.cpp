@@ -44,6 +44,7 @@ struct EvalOptions {
     bool estimate_floor = false;
     std::string config_path;
     bool json = false;
+    std::string group_by = "kind";
     EvaluationParams params;
 };
 
@@ -65,7 +66,7 @@ std::vector<EvaluationSample> detectSamples(const EvalOptions& options) {
         sample.name = cloud_path;
         const std::string gt = io::truthPathFor(cloud_path);
         sample.truth = io::readGroundTruthFile(gt);
-        sample.kind = io::sampleKind(gt);
+        sample.kind = io::sampleLabel(gt, options.group_by);
         const PointCloud cloud = io::readCloudFile(cloud_path);
         const std::optional<double> floor_z =
             options.estimate_floor ? std::nullopt : sample.truth.observer_floor_z;
@@ -124,6 +125,9 @@ Command addEvalCommand(CLI::App& app) {
                           "--detect: let the detector estimate the floor instead of using the truth's");
     command.cli->add_option("--config", options->config_path, "INI file with a [detector] section");
     command.cli->add_flag("--json", options->json, "Machine-readable JSON instead of the table");
+    command.cli->add_option("--group-by", options->group_by,
+                            "--detect: table rows by this top-level gt.json key (default kind; e.g. "
+                            "sensor_kind for the random benchmark)");
     command.cli->add_option("--max-xy", options->params.max_xy_m, "[m] matching: median xy distance")
         ->check(CLI::PositiveNumber);
     command.cli->add_option("--max-z", options->params.max_z_m, "[m] matching: median z distance")

@@ -80,7 +80,7 @@ void validate(const NegativeParams& p) {
     require(p.stage_rise_m > 0 && p.stage_rise_m < 1, "stage_rise_m", "must be in (0, 1) m");
     require(p.stage_run_m > 0.05 && p.stage_run_m < 2, "stage_run_m", "must be in (0.05, 2) m");
     require(p.bleacher_tiers >= 2 && p.bleacher_tiers <= 20, "bleacher_tiers", "must be 2..20");
-    require(p.bleacher_rise_m >= 0.4 && p.bleacher_rise_m < 2, "bleacher_rise_m", "must be 0.4..2 m");
+    require(p.bleacher_rise_m >= 0.35 && p.bleacher_rise_m < 2, "bleacher_rise_m", "must be 0.35..2 m (lower tiers are steps)");
     require(p.bleacher_run_m > 0.2 && p.bleacher_run_m < 3, "bleacher_run_m", "must be in (0.2, 3) m");
     require(p.origin.allFinite(), "origin", "must be finite");
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Scenes that contain NO staircase under the paper's definition, to count false positives:
 // a furnished room, a ramp (5-15 deg), a single curb, a 1-2 step stage, bleachers whose tiers are too
-// tall to be steps (>= 0.40 m). They add solids only; the truth gets no staircase.
+// tall to be steps (>= 0.35 m). They add solids only; the truth gets no staircase.
 
 #include <Eigen/Core>
 #include <string>
@@ -22,7 +22,7 @@ struct NegativeParams {
     double stage_rise_m = 0.18;     ///< [m]
     double stage_run_m = 0.30;      ///< [m]
     int bleacher_tiers = 4;
-    double bleacher_rise_m = 0.45;  ///< [m] tier height (>= 0.40: not a step)
+    double bleacher_rise_m = 0.45;  ///< [m] tier height (>= 0.35: well above any rise, not a step)
     double bleacher_run_m = 0.80;   ///< [m] tier depth
 };
 

@@ -42,6 +42,16 @@ SensorParams hdl32() {
     return p;
 }
 
+SensorParams os0_128() {
+    SensorParams p;
+    p.model = "os0_128";
+    p.elevations_deg = evenlySpaced(-45.0, 45.0, 128);
+    p.horizontal_resolution_deg = 360.0 / 1024.0;
+    p.max_range_m = 50.0;
+    p.range_noise_std_m = 0.015;
+    return p;
+}
+
 SensorParams depthCamera() {
     SensorParams p;
     p.model = "depth_camera";
@@ -56,9 +66,10 @@ SensorParams sensorPreset(const std::string& model) {
     if (model == "vlp16") return vlp16();
     if (model == "os1_64") return os1_64();
     if (model == "hdl32") return hdl32();
+    if (model == "os0_128") return os0_128();
     if (model == "depth_camera") return depthCamera();
     throw std::invalid_argument("sensor model '" + model +
-                                "' is unknown (vlp16, os1_64, hdl32, depth_camera)");
+                                "' is unknown (vlp16, os1_64, hdl32, os0_128, depth_camera)");
 }
 
 void validate(const SensorParams& p) {

@@ -11,7 +11,7 @@ namespace stairmap::sim {
 enum class SensorType { SpinningLidar, DepthCamera };
 
 struct SensorParams {
-    std::string model = "vlp16";        ///< preset name: vlp16 | os1_64 | hdl32 | depth_camera
+    std::string model = "vlp16";        ///< preset name: vlp16 | os1_64 | hdl32 | os0_128 | depth_camera
     SensorType type = SensorType::SpinningLidar;
     // --- spinning LiDAR
     std::vector<double> elevations_deg;  ///< [deg] one entry per beam (laser ring)
@@ -34,6 +34,7 @@ SensorParams sensorPreset(const std::string& model);
 SensorParams vlp16();   ///< 16 beams, -15..+15 deg every 2 deg, 100 m
 SensorParams os1_64();  ///< 64 beams evenly over -22.5..+22.5 deg, 120 m
 SensorParams hdl32();   ///< 32 beams, -30.67..+10.67 deg every 1.333 deg, 100 m
+SensorParams os0_128();  ///< 128 beams evenly over -45..+45 deg, 1024 columns, 50 m
 SensorParams depthCamera();  ///< RealSense-like 87x58 deg, 0.2..6 m
 
 /// Throws std::invalid_argument naming the field if a parameter is out of range.

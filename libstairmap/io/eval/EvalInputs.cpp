@@ -89,6 +89,13 @@ std::string sampleKind(const std::string& gt_path) {
     return truth.staircases.empty() ? "negative" : stairKindName(truth.staircases.front().kind);
 }
 
+std::string sampleLabel(const std::string& gt_path, const std::string& key) {
+    if (key == "kind") return sampleKind(gt_path);
+    const json j = readJson(gt_path);
+    if (j.contains(key) && j[key].is_string()) return j[key].get<std::string>();
+    return "unknown";
+}
+
 std::vector<std::pair<std::string, std::optional<std::string>>> pairDetectionFilesWithTruth(
     const std::vector<std::string>& inputs, const std::vector<std::string>& gt_paths) {
     std::vector<std::pair<std::string, std::optional<std::string>>> pairs;

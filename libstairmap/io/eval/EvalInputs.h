@@ -51,4 +51,8 @@ std::vector<std::pair<std::string, std::optional<std::string>>> pairDetectionFil
 /// "negative".
 std::string sampleKind(const std::string& gt_path);
 
+/// Table row of a truth file grouped by another top-level key (e.g. "sensor_kind" of the random
+/// benchmark's gt.json): its string value, or "unknown" when absent; "kind" is sampleKind.
+std::string sampleLabel(const std::string& gt_path, const std::string& key);
+
 }  // namespace stairmap::io
