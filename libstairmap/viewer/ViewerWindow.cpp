@@ -17,6 +17,7 @@ using Clock = std::chrono::steady_clock;
 
 /// Camera of the window's canvas from a CameraView.
 void applyCamera(mrpt::gui::CGlCanvasBase& canvas, const viz::CameraView& v) {
+    canvas.setCameraFOV(60.0f);  // as the headless renderer: cameraFor() fits views to 60 deg
     canvas.setCameraPointing(static_cast<float>(v.target.x()), static_cast<float>(v.target.y()),
                              static_cast<float>(v.target.z()));
     canvas.setZoomDistance(static_cast<float>(v.distance_m));

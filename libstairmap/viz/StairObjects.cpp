@@ -139,9 +139,14 @@ CSetOfObjects::Ptr landmarkObjects(const std::vector<StaircaseLandmark>& landmar
             out->insert(tread);
         }
         out->insert(edges);
+        // The ID high above the top step (clear of nearby walls), tied to it by a leader line.
         const Eigen::Vector3d top = s.steps.empty() ? s.location : s.steps.back().centre();
+        const Eigen::Vector3d tag = top + Eigen::Vector3d(0, 0, 1.2);
+        auto leader = lineSet(2.0f, 255, 255, 255);
+        leader->appendLine(top.x(), top.y(), top.z(), tag.x(), tag.y(), tag.z());
+        out->insert(leader);
         const std::string text = "#" + std::to_string(lm.id) + (selected ? " *" : "");
-        out->insert(label(text, top + Eigen::Vector3d(0, 0, 0.6), 255, 255, 255));
+        out->insert(label(text, tag, 255, 255, 255));
     }
     return out;
 }

@@ -6,7 +6,6 @@
 #include <mrpt/img/color_maps.h>
 #include <mrpt/opengl/CPointCloudColoured.h>
 #include <mrpt/opengl/CSetOfLines.h>
-#include <mrpt/opengl/CSetOfTriangles.h>
 #include <mrpt/poses/CPose3D.h>
 
 #include <algorithm>
@@ -68,18 +67,15 @@ void addVoxels(const ViewFrame& f, bool robot_floor_only, mrpt::opengl::COpenGLS
     scene.insert(heightCloud(centres, lo, hi, mrpt::img::cmJET, 1.5f));
 }
 
+/// A floor level as a 1 m grid of lines at its height: a "plane" that never hides what lies
+/// below it (MRPT sorts translucent triangles by shader, not depth, so a translucent quad did).
 void addFloors(const ViewFrame& f, const SceneBounds& b, mrpt::opengl::COpenGLScene& scene) {
-    // Two triangles per floor (a box's six faces cost far more fill in software rendering).
-    auto planes = mrpt::opengl::CSetOfTriangles::Create();
     for (const Floor& floor : f.floors) {
-        const auto z = static_cast<float>(floor.z);
-        const mrpt::math::TPoint3Df a(b.min.x(), b.min.y(), z), c(b.max.x(), b.max.y(), z);
-        const mrpt::math::TPoint3Df p(b.max.x(), b.min.y(), z), q(b.min.x(), b.max.y(), z);
-        planes->insertTriangle(mrpt::opengl::TTriangle(a, p, c));
-        planes->insertTriangle(mrpt::opengl::TTriangle(a, c, q));
+        auto grid = mrpt::opengl::CGridPlaneXY::Create(b.min.x(), b.max.x(), b.min.y(), b.max.y(),
+                                                       floor.z, 1.0);
+        grid->setColor_u8(120, 160, 255, 140);
+        scene.insert(grid);
     }
-    planes->setColor_u8(mrpt::img::TColor(120, 160, 255, 40));  // translucent blue
-    scene.insert(planes);
 }
 
 /// The robot as unlit lines (shading made solids too dark to spot): a white footprint with a red
@@ -152,10 +148,12 @@ void buildViewerScene(const ViewFrame& f, const ViewLayers& layers,
     scene.clear();
     scene.getViewport()->setCustomBackgroundColor(mrpt::img::TColorf(0.12f, 0.12f, 0.14f));
     const SceneBounds bounds = frameBounds(f);
-    auto grid = mrpt::opengl::CGridPlaneXY::Create(bounds.min.x(), bounds.max.x(), bounds.min.y(),
-                                                   bounds.max.y(), 0.0, 1.0);
-    grid->setColor_u8(90, 90, 90, 120);
-    scene.insert(grid);
+    if (f.floors.empty() || !layers.floors) {  // a neutral ground grid when no floor is drawn
+        auto grid = mrpt::opengl::CGridPlaneXY::Create(bounds.min.x(), bounds.max.x(),
+                                                       bounds.min.y(), bounds.max.y(), 0.0, 1.0);
+        grid->setColor_u8(90, 90, 90, 120);
+        scene.insert(grid);
+    }
     if (layers.voxels) addVoxels(f, layers.voxels_robot_floor, scene);
     if (layers.scan) addScan(f, scene);
     if (layers.floors) addFloors(f, bounds, scene);
