@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "SyntheticScenes.h"
+#include "support/SyntheticScenes.h"
 #include "core/StairDetector.h"
 #include "core/StairPairExplain.h"
 #include "core/StairSearch.h"
@@ -55,7 +55,7 @@ TEST(DetectorDebug, SameResultWithAndWithoutTheRecord) {
     up.distance_m = 1.8;
     scene.addStairs(up);
     StairSpec down;
-    down.kind = test::StairKind::Descending;
+    down.kind = StairKind::Descending;
     down.yaw_rad = M_PI;
     scene.addStairs(down);
     scene.addFloor();
