@@ -114,7 +114,9 @@ TEST(ReplaySession, BadInputNamesTheFile) {
 class MapFolderTest : public testing::Test {
 protected:
     void SetUp() override {
-        dir_ = std::filesystem::path(STAIRMAP_TEST_TMP) / "replay" / "map_folder";
+        // One folder per test: ctest runs the tests of a fixture in parallel processes.
+        dir_ = std::filesystem::path(STAIRMAP_TEST_TMP) / "replay" /
+               testing::UnitTest::GetInstance()->current_test_info()->name();
         std::filesystem::remove_all(dir_);
         std::filesystem::create_directories(dir_);
     }
