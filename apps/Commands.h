@@ -19,5 +19,7 @@ Command addEvalCommand(CLI::App& app);
 Command addMapCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
+Command addViewCommand(CLI::App& app);
+Command addAnnotateCommand(CLI::App& app);
 
 }  // namespace stairmap::apps

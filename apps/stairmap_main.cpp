@@ -1,4 +1,5 @@
-// stairmap: one executable, one subcommand per job (detect, sim, eval, map, merge, export).
+// stairmap: one executable, one subcommand per job (detect, sim, eval, map, merge, export, view,
+// annotate).
 
 #include <exception>
 #include <iostream>
@@ -15,7 +16,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     std::vector<Command> commands = {addDetectCommand(app), addSimCommand(app),
                                      addEvalCommand(app), addMapCommand(app),
-                                     addMergeCommand(app), addExportCommand(app)};
+                                     addMergeCommand(app), addExportCommand(app),
+                                     addViewCommand(app), addAnnotateCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -127,6 +127,26 @@ void BM_Detect(benchmark::State& state) {
     state.counters["rise_mm"] = 1000.0 * rise;  // truth: 170 mm
 }
 
+/// The same detection filling a DetectorDebug record (what `stairmap view` asks for): the cost of
+/// the record compared with BM_Detect, which passes none (and must not be slower for it).
+void BM_DetectDebug(benchmark::State& state) {
+    const PointCloud& cloud = cachedCloud(state.range(0));
+    const stairmap::StairDetector detector;
+    stairmap::DetectorDebug debug;
+    std::size_t found = 0;
+    for (auto _ : state) {
+        const auto result = detector.detect(cloud, -kBaseHeightM, &debug);
+        found = result.staircases.size();
+        benchmark::DoNotOptimize(result);
+    }
+    state.counters["points"] = static_cast<double>(cloud.size());
+    state.counters["staircases"] = static_cast<double>(found);
+    state.counters["candidates"] = static_cast<double>(debug.candidates.size());
+    state.counters["lines"] =
+        static_cast<double>(debug.lines_ascending.size() + debug.lines_descending.size());
+    state.counters["rejected"] = static_cast<double>(debug.rejected.size());
+}
+
 /// The first pre-processing stage alone (the largest share of a detection).
 void BM_TopView(benchmark::State& state) {
     const PointCloud& cloud = cachedCloud(state.range(0));
@@ -158,6 +178,14 @@ BENCHMARK(BM_Detect)
     ->Arg(200000)
     ->Arg(1000000)
     ->Arg(-60000)  // 60k points in random order
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(7)
+    ->ReportAggregatesOnly(true);
+
+BENCHMARK(BM_DetectDebug)
+    ->Arg(20000)
+    ->Arg(60000)
+    ->Arg(200000)
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(7)
     ->ReportAggregatesOnly(true);

@@ -10,6 +10,7 @@
 #include "core/LineFusion.h"
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
+#include "core/StairPairExplain.h"
 #include "core/StairSearch.h"
 #include "core/StaircaseGeometry.h"
 #include "core/StaircaseMerge.h"
@@ -117,8 +118,27 @@ void prependFloorNosing(const std::vector<TopViewCell>& cells, double floor_z,
     if (nosing) edges.insert(edges.begin(), *nosing);
 }
 
+/// Debug record of one direction: its lines (real z) and the chains the search refused.
+void recordDirection(const std::vector<LineSegment>& lines, const std::vector<char>& used,
+                     const std::vector<int>& refused, StairDirection dir, double floor_z,
+                     const DetectorParams& p, DetectorDebug& debug) {
+    const bool up = dir == StairDirection::Ascending;
+    auto& out = up ? debug.lines_ascending : debug.lines_descending;
+    for (LineSegment l : lines) {
+        if (!up) l.z = 2 * floor_z - l.z;
+        out.push_back(l);
+    }
+    if (!refused.empty() && debug.rejected.size() < DetectorDebug::kMaxRejected) {
+        RejectedChain chain{dir, {}, tooFewSteps(refused.size(), up ? p.min_steps : p.min_steps - 1)};
+        for (int idx : refused) chain.edges.push_back(lines[idx]);
+        if (!up) for (auto& e : chain.edges) e.z = 2 * floor_z - e.z;
+        debug.rejected.push_back(std::move(chain));
+    }
+    explainRefusedPairs(lines, used, dir, floor_z, p, debug.rejected);
+}
+
 void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, double floor_z,
-                     const DetectorParams& p, std::vector<Staircase>& out) {
+                     const DetectorParams& p, std::vector<Staircase>& out, DetectorDebug* debug) {
     const bool up = dir == StairDirection::Ascending;
     std::vector<LineSegment> lines = extractLines(cells, up ? kFrontDrop : kBackDrop, floor_z, p);
     if (!up) {
@@ -131,7 +151,12 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
     // search may stop one edge short of min_steps, and the flight counts once that edge is added.
     DetectorParams search = p;
     if (!up) search.min_steps = std::max(2, p.min_steps - 1);
-    for (const auto& chain : searchStaircases(lines, floor_z, p.floor_tolerance_m, search)) {
+    std::vector<int> refused;
+    std::vector<char> used;
+    const auto chains = searchStaircases(lines, floor_z, p.floor_tolerance_m, search,
+                                         debug ? &refused : nullptr, debug ? &used : nullptr);
+    if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
+    for (const auto& chain : chains) {
         std::vector<LineSegment> edges;
         for (int idx : chain) {
             edges.push_back(lines[idx]);
@@ -140,7 +165,12 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
         // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
         if (p.edge_height_tolerance_m > 0) raiseLowEdges(edges, kRiserHitMinDrop);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
-        if (static_cast<int>(edges.size()) < p.min_steps) continue;
+        if (static_cast<int>(edges.size()) < p.min_steps) {
+            if (debug && debug->rejected.size() < DetectorDebug::kMaxRejected)
+                debug->rejected.push_back({dir, edges, tooFewSteps(edges.size(), p.min_steps) +
+                                                           " (no floor nosing)"});
+            continue;
+        }
         out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }
 }
@@ -169,12 +199,14 @@ void mergeSplitFlights(std::vector<Staircase>& found, std::size_t first) {
 
 StairDetector::StairDetector(const DetectorParams& params) : params_(params) { params_.validate(); }
 
-DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
-                                      std::optional<double> floor_z) const {
+DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::optional<double> floor_z,
+                                      DetectorDebug* debug) const {
     DetectionResult result;
+    if (debug) debug->clear();
     const auto [floor, estimated] = resolveFloor(cloud_robot, floor_z, params_);
     result.floor_z = floor;
     result.floor_estimated = estimated;
+    if (debug) debug->floor_z = floor;
     if (cloud_robot.empty()) return result;
 
     TopViewParams tp;
@@ -190,16 +222,20 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot,
     thread_local std::vector<TopViewCell> tl_cells;  // scratch re-used between calls
     std::vector<TopViewCell>& cells = tl_cells;
     buildTopView(cloud_robot, tp, cells);
+    if (debug) debug->candidates = cells;
 
     if (params_.detect_ascending)
-        detectDirection(cells, StairDirection::Ascending, floor, params_, result.staircases);
+        detectDirection(cells, StairDirection::Ascending, floor, params_, result.staircases,
+                        debug);
     if (params_.detect_descending)
-        detectDirection(cells, StairDirection::Descending, floor, params_, result.staircases);
+        detectDirection(cells, StairDirection::Descending, floor, params_, result.staircases,
+                        debug);
     mergeSplitFlights(result.staircases, 0);
     FlightJoinParams jp;
     jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
     jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);
     joinContinuedFlights(result.staircases, jp);
+    if (debug) debug->accepted = result.staircases;
     return result;
 }
 

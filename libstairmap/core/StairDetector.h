@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/DetectorDebug.h"
 #include "core/DetectorParams.h"
 #include "core/PointCloud.h"
 #include "core/Staircase.h"
@@ -26,8 +27,11 @@ public:
     explicit StairDetector(const DetectorParams& params = {});
 
     /// floor_z: height of the floor the robot stands on [m] (= -robot height); estimated when absent.
+    /// debug: when not null, cleared and filled with the intermediate results (costs extra time
+    /// and memory); null (the default) adds no work. The result is the same either way.
     DetectionResult detect(const PointCloud& cloud_robot,
-                           std::optional<double> floor_z = std::nullopt) const;
+                           std::optional<double> floor_z = std::nullopt,
+                           DetectorDebug* debug = nullptr) const;
 
     const DetectorParams& params() const { return params_; }
 

@@ -145,15 +145,20 @@ bool hasLineBetween(const std::vector<LineSegment>& lines, int lower, int upper,
 
 std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& lines,
                                                double floor_z, double min_first_height,
-                                               const DetectorParams& p) {
+                                               const DetectorParams& p, std::vector<int>* refused,
+                                               std::vector<char>* used_out) {
     std::vector<std::vector<int>> found;
     std::vector<char> used(lines.size(), 0);
     while (static_cast<int>(found.size()) < p.max_staircases_per_direction) {
         const Candidate c = bestFromInit(lines, used, floor_z, min_first_height, p);
-        if (static_cast<int>(c.steps.size()) < p.min_steps) break;
+        if (static_cast<int>(c.steps.size()) < p.min_steps) {
+            if (refused != nullptr && c.steps.size() >= 2) *refused = c.steps;
+            break;
+        }
         for (int i : c.steps) used[i] = 1;
         found.push_back(c.steps);
     }
+    if (used_out != nullptr) *used_out = std::move(used);
     return found;
 }
 

@@ -32,8 +32,12 @@ bool hasLineBetween(const std::vector<LineSegment>& sorted_lines, int lower, int
 /// Algorithm 1 repeated: staircases found in `sorted_lines` (sorted by z, z measured upwards away
 /// from the floor at `floor_z`). Each result lists line indices from the floor outward.
 /// `min_first_height` is the lowest allowed height of the first edge above the floor [m].
+/// `refused` (debug only, may be null): receives the best chain that ended the search for being
+/// shorter than min_steps (when it had two edges or more), and `used` the lines taken by results.
 std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& sorted_lines,
                                                double floor_z, double min_first_height,
-                                               const DetectorParams& params);
+                                               const DetectorParams& params,
+                                               std::vector<int>* refused = nullptr,
+                                               std::vector<char>* used = nullptr);
 
 }  // namespace stairmap

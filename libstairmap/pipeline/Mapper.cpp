@@ -123,23 +123,42 @@ void Mapper::detectAround(const Scan& scan) {
                                        params_.scheduling.submap_leaf_m);
     }
     DetectionResult result;
+    DetectorDebug* debug = on_run_ && run_debug_ ? &debug_ : nullptr;
+    const double detect_before_s = stats_.times.detect_s;
     {
         const StageTimer timer(stats_.times.detect_s);
-        result = detector_.detect(submap, submapFloorZ());
+        result = detector_.detect(submap, submapFloorZ(), debug);
     }
     ++stats_.detector_runs;
     stats_.submap_points += submap.size();
-    const StageTimer timer(stats_.times.landmarks_s);
-    bool changed = false;
-    for (const Staircase& staircase : result.staircases) {
-        addToLandmarks(transformStaircase(staircase, T_world_grav), scan, changed);
+    DetectionRun run;
+    {
+        const StageTimer timer(stats_.times.landmarks_s);
+        bool changed = false;
+        for (const Staircase& staircase : result.staircases) {
+            DetectionRecord record =
+                addToLandmarks(transformStaircase(staircase, T_world_grav), scan, changed);
+            if (on_run_) run.records.push_back(std::move(record));
+        }
+        const double robot_floor_z =
+            scan.T_world_robot.translation().z() - params_.sensor.robot_height_m;
+        changed = landmarks_.addRobotFloor(robot_floor_z, scan.stamp_s) || changed;
+        if (changed && on_changed_) on_changed_(landmarks_);
     }
-    const double robot_floor_z = scan.T_world_robot.translation().z() - params_.sensor.robot_height_m;
-    changed = landmarks_.addRobotFloor(robot_floor_z, scan.stamp_s) || changed;
-    if (changed && on_changed_) on_changed_(landmarks_);
+    if (!on_run_) return;
+    run.scan_index = scan.index;
+    run.stamp_s = scan.stamp_s;
+    run.T_world_grav = T_world_grav;
+    run.submap_radius_m = params_.scheduling.submap_radius_m;
+    run.submap = &submap;
+    run.result = &result;
+    run.debug = debug;
+    run.detect_s = stats_.times.detect_s - detect_before_s;
+    on_run_(run);
 }
 
-void Mapper::addToLandmarks(const Staircase& staircase_world, const Scan& scan, bool& changed) {
+DetectionRecord Mapper::addToLandmarks(const Staircase& staircase_world, const Scan& scan,
+                                       bool& changed) {
     ++stats_.detections;
     DetectionRecord record;
     record.scan_index = scan.index;
@@ -150,6 +169,7 @@ void Mapper::addToLandmarks(const Staircase& staircase_world, const Scan& scan, 
     if (!record.update.changed) ++stats_.detections_rejected;
     changed = changed || record.update.changed;
     if (on_detection_) on_detection_(record);
+    return record;
 }
 
 }  // namespace stairmap::pipeline

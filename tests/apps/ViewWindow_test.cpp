@@ -1,0 +1,172 @@
+// `stairmap view` in a real window: Xvfb on a free display, the viewer driven by key events
+// (xdotool) on top of a short script, screenshots (xwd) before and after stepping. Everything is
+// bounded in time and the processes started here are ended here.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mrpt/img/CImage.h>
+#include <thread>
+
+#include "CliRunner.h"
+#include "viz/ViewerScene.h"
+
+extern char** environ;
+
+namespace stairmap::test {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+/// A child process started with posix_spawnp, terminated (SIGTERM, then SIGKILL) on destruction.
+class Child {
+public:
+    Child(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env = {},
+          const std::string& stdout_path = "/dev/null") {
+        std::vector<char*> args;
+        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        env_ = extra_env;
+        for (char** e = environ; *e != nullptr; ++e) env_.emplace_back(*e);
+        std::vector<char*> envp;
+        for (const auto& e : env_) envp.push_back(const_cast<char*>(e.c_str()));
+        envp.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addopen(&actions, 1, stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+        if (posix_spawnp(&pid_, args[0], &actions, nullptr, args.data(), envp.data()) != 0) pid_ = -1;
+        posix_spawn_file_actions_destroy(&actions);
+    }
+    ~Child() {
+        if (pid_ <= 0 || exited_) return;
+        kill(pid_, SIGTERM);
+        for (int i = 0; i < 50 && !poll(); ++i) std::this_thread::sleep_for(100ms);
+        if (!exited_) {
+            kill(pid_, SIGKILL);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+    bool started() const { return pid_ > 0; }
+    /// True once the child has exited (status in exitCode()).
+    bool poll() {
+        int status = 0;
+        if (!exited_ && waitpid(pid_, &status, WNOHANG) == pid_) {
+            exited_ = true;
+            code_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+        }
+        return exited_;
+    }
+    int exitCode() const { return code_; }
+
+private:
+    pid_t pid_ = -1;
+    bool exited_ = false;
+    int code_ = -1;
+    std::vector<std::string> env_;
+};
+
+/// The first display number in 90..190 with neither a lock file nor a socket.
+int freeDisplay() {
+    for (int d = 90; d < 190; ++d) {
+        if (!fs::exists("/tmp/.X" + std::to_string(d) + "-lock") &&
+            !fs::exists("/tmp/.X11-unix/X" + std::to_string(d)))
+            return d;
+    }
+    return -1;
+}
+
+template <class Pred>
+bool waitFor(Pred pred, std::chrono::seconds limit) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < end) {
+        if (pred()) return true;
+        std::this_thread::sleep_for(200ms);
+    }
+    return false;
+}
+
+int sh(const std::string& display, const std::string& command) {
+    const int status = std::system(("export DISPLAY=" + display + "; " + command).c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+mrpt::img::CImage screenshot(const std::string& display, const std::string& path) {
+    EXPECT_EQ(sh(display, "xwd -root -silent | convert xwd:- '" + path + "'"), 0);
+    mrpt::img::CImage img;
+    EXPECT_TRUE(img.loadFromFile(path));
+    return img;
+}
+
+double differingFraction(const mrpt::img::CImage& a, const mrpt::img::CImage& b) {
+    std::size_t diff = 0;
+    for (int y = 0; y < static_cast<int>(a.getHeight()); ++y)
+        for (int x = 0; x < static_cast<int>(a.getWidth()); ++x)
+            for (unsigned c = 0; c < 3; ++c)
+                if (std::abs(int(*a(x, y, c)) - int(*b(x, y, c))) > 8) {
+                    ++diff;
+                    break;
+                }
+    return double(diff) / (a.getWidth() * a.getHeight());
+}
+
+std::size_t pixelsNear(const mrpt::img::CImage& img, const unsigned char* rgb) {
+    std::size_t n = 0;
+    for (int y = 0; y < static_cast<int>(img.getHeight()); ++y)
+        for (int x = 0; x < static_cast<int>(img.getWidth()); ++x)
+            if (std::abs(int(*img(x, y, 2)) - rgb[0]) < 40 && std::abs(int(*img(x, y, 1)) - rgb[1]) < 40 &&
+                std::abs(int(*img(x, y, 0)) - rgb[2]) < 40)
+                ++n;
+    return n;
+}
+
+TEST(ViewWindow, StepsWithKeysAndShowsTheLandmarks) {
+    const std::string dir = cliScratchDir("view", "window");
+    const int d = freeDisplay();
+    ASSERT_GT(d, 0) << "no free X display number";
+    const std::string display = ":" + std::to_string(d);
+    Child xvfb({"Xvfb", display, "-screen", "0", "1280x800x24", "-nolisten", "tcp"});
+    ASSERT_TRUE(xvfb.started()) << "Xvfb (Debian xvfb) not found";
+    ASSERT_TRUE(waitFor([&] { return fs::exists("/tmp/.X11-unix/X" + std::to_string(d)); }, 15s));
+
+    // The script starts at scan 20 (nothing detected yet) and keeps the window open at most 90 s.
+    std::ofstream(dir + "/script.txt") << "seek 20\nwait 90\nquit\n";
+    const std::string data = std::string(STAIRMAP_SOURCE_DIR) + "/datasets/two_floor/";
+    Child viewer({"timeout", "150", STAIRMAP_BIN, "view", data + "two_floor.rawlog", "--poses",
+                  data + "poses.tum", "--config",
+                  std::string(STAIRMAP_SOURCE_DIR) + "/config/sim_legged_vlp16.ini", "--script",
+                  dir + "/script.txt"},
+                 {"DISPLAY=" + display}, dir + "/stdout.txt");
+    ASSERT_TRUE(viewer.started());
+    const std::string find = "xdotool search --name 'stairmap view' >/dev/null 2>&1";
+    ASSERT_TRUE(waitFor([&] { return sh(display, find) == 0; }, 60s)) << "no window appeared";
+    std::this_thread::sleep_for(6s);  // the first frames (scan 20) are drawn
+    const auto before = screenshot(display, dir + "/before.png");
+
+    // Step to the end (63 x right arrow: both flights get confirmed), then the top camera.
+    std::string keys;
+    for (int i = 0; i < 63; ++i) keys += " Right";
+    ASSERT_EQ(sh(display, "xdotool search --name 'stairmap view' windowfocus >/dev/null 2>&1; "
+                          "xdotool key --delay 30" + keys + " c"), 0);
+    std::this_thread::sleep_for(8s);
+    const auto after = screenshot(display, dir + "/after.png");
+    EXPECT_GT(differingFraction(before, after), 0.05) << "the window did not change after stepping";
+    EXPECT_EQ(pixelsNear(before, viz::kConfirmedRgb), 0u) << "a confirmed landmark at scan 20?";
+    EXPECT_GT(pixelsNear(after, viz::kConfirmedRgb), 50u) << "no confirmed-landmark colour";
+
+    sh(display, "xdotool key q");
+    EXPECT_TRUE(waitFor([&] { return viewer.poll(); }, 30s)) << "the viewer did not quit on Q";
+    EXPECT_EQ(viewer.exitCode(), 0);
+    EXPECT_NE(readText(dir + "/stdout.txt").find("frames in"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace stairmap::test
