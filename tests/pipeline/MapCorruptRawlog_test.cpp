@@ -70,6 +70,8 @@ const Damage kDamages[] = {
     {"label_length", uint32Bytes(5) + "lidar", 0xE0000000u},
 };
 
+void PrintTo(const Damage& damage, std::ostream* os) { *os << damage.name; }
+
 class MapCorruptRawlog : public ::testing::TestWithParam<Damage> {};
 
 TEST_P(MapCorruptRawlog, HugeSizeFieldIsACleanErrorWithin512MB) {
