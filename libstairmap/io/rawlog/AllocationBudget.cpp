@@ -1,6 +1,5 @@
 #include "io/rawlog/AllocationBudget.h"
 
-#include <dlfcn.h>
 #include <mrpt/core/aligned_allocator.h>
 
 #include <cinttypes>
@@ -40,45 +39,74 @@ void AllocationBudget::charge(std::size_t bytes) {
 }  // namespace stairmap::io
 
 // ---- replacement allocation functions ------------------------------------------------------
-// Each one charges the active budget, then forwards to the next definition in the process
-// (libstdc++, or AddressSanitizer's when it is loaded, which keeps its checks intact).
+// The standard allows a program to replace operator new/delete. Every form is replaced, on
+// malloc / aligned_alloc / free, so that each pair stays consistent whatever else defines them
+// (libstdc++, or a sanitizer runtime linked into the executable: forwarding to "the next"
+// operator new instead mixed allocators under clang's static ASan runtime).
 namespace {
 
-template <typename Fn>
-Fn nextDefinition(const char* mangled_name) {
-    void* fn = dlsym(RTLD_NEXT, mangled_name);
-    if (fn == nullptr) std::abort();  // cannot happen with a C++ runtime loaded
-    return reinterpret_cast<Fn>(fn);
+void* allocateOrThrow(std::size_t size) {
+    stairmap::io::AllocationBudget::charge(size);
+    for (;;) {
+        if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+        std::new_handler handler = std::get_new_handler();
+        if (handler == nullptr) throw std::bad_alloc();
+        handler();
+    }
 }
 
-using NewFn = void* (*)(std::size_t);
-using AlignedNewFn = void* (*)(std::size_t, std::align_val_t);
+void* allocateAlignedOrThrow(std::size_t size, std::align_val_t alignment) {
+    stairmap::io::AllocationBudget::charge(size);
+    const auto align = static_cast<std::size_t>(alignment);
+    const std::size_t rounded = (size + align - 1) / align * align;  // aligned_alloc's rule
+    for (;;) {
+        if (void* p = std::aligned_alloc(align, rounded == 0 ? align : rounded)) return p;
+        std::new_handler handler = std::get_new_handler();
+        if (handler == nullptr) throw std::bad_alloc();
+        handler();
+    }
+}
+
+template <typename Fn>
+void* noThrow(Fn&& allocate) noexcept {
+    try {
+        return allocate();
+    } catch (...) {
+        return nullptr;
+    }
+}
 
 }  // namespace
 
-void* operator new(std::size_t size) {
-    static const NewFn next = nextDefinition<NewFn>("_Znwm");
-    stairmap::io::AllocationBudget::charge(size);
-    return next(size);
+void* operator new(std::size_t n) { return allocateOrThrow(n); }
+void* operator new[](std::size_t n) { return allocateOrThrow(n); }
+void* operator new(std::size_t n, std::align_val_t a) { return allocateAlignedOrThrow(n, a); }
+void* operator new[](std::size_t n, std::align_val_t a) { return allocateAlignedOrThrow(n, a); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    return noThrow([&] { return allocateOrThrow(n); });
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+    return noThrow([&] { return allocateOrThrow(n); });
+}
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+    return noThrow([&] { return allocateAlignedOrThrow(n, a); });
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+    return noThrow([&] { return allocateAlignedOrThrow(n, a); });
 }
 
-void* operator new[](std::size_t size) {
-    static const NewFn next = nextDefinition<NewFn>("_Znam");
-    stairmap::io::AllocationBudget::charge(size);
-    return next(size);
-}
-
-void* operator new(std::size_t size, std::align_val_t alignment) {
-    static const AlignedNewFn next = nextDefinition<AlignedNewFn>("_ZnwmSt11align_val_t");
-    stairmap::io::AllocationBudget::charge(size);
-    return next(size, alignment);
-}
-
-void* operator new[](std::size_t size, std::align_val_t alignment) {
-    static const AlignedNewFn next = nextDefinition<AlignedNewFn>("_ZnamSt11align_val_t");
-    stairmap::io::AllocationBudget::charge(size);
-    return next(size, alignment);
-}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
 
 // MRPT's own aligned allocator (libmrpt-core) is called through the PLT by every MRPT library,
 // so this definition replaces it process-wide. Same contract as MRPT 2.5's (size rounded up to

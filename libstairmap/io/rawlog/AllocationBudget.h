@@ -9,9 +9,9 @@
 // added up; a request that would exceed the budget throws AllocationBudgetExceeded (a
 // std::bad_alloc) instead, so the deserializer unwinds normally and frees what it built.
 //
-// The check lives in replacement allocation functions defined in AllocationBudget.cpp, which
-// forward to the next definition (libstdc++'s, or a sanitizer's) and cost one thread-local
-// read per allocation when no budget is active. Frees are not credited back: the budget bounds
+// The check lives in replacement allocation functions (operator new/delete, all forms, on
+// malloc/free; and mrpt::aligned_malloc) defined in AllocationBudget.cpp; they cost one
+// thread-local read per allocation when no budget is active. Frees are not credited back: the budget bounds
 // the total requested inside the block, which is what matters for one deserialized object.
 
 #include <cstdint>
