@@ -5,6 +5,10 @@ BUILD_DIR  ?= build
 BUILD_TYPE ?= Release
 JOBS       ?= $(shell nproc)
 STAIRMAP   := $(BUILD_DIR)/bin/stairmap
+SAN_DIR    ?= build-sanitize
+FUZZ_DIR   ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS := fuzz_cloud fuzz_cloud_gz fuzz_rawlog fuzz_landmarks_json fuzz_gt_json fuzz_ini fuzz_tum
 DEMO_OUT   ?= $(BUILD_DIR)/demo
 
 DEB_PACKAGES := cmake make g++ \
@@ -12,11 +16,17 @@ DEB_PACKAGES := cmake make g++ \
 	libmrpt-system-dev libmrpt-serialization-dev libmrpt-opengl-dev libmrpt-img-dev \
 	liboctomap-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
 	nlohmann-json3-dev libcli11-dev zlib1g-dev \
-	libmrpt-gui-dev xvfb xdotool x11-apps imagemagick ffmpeg mrpt-apps
+	libmrpt-gui-dev xvfb xdotool x11-apps imagemagick ffmpeg mrpt-apps \
+	clang-14 libclang-rt-14-dev
+
+# Sanitizer settings: leaks are findings; UBSan prints a stack. The only suppressions are for
+# third-party code, each explained in the file.
+SAN_ASAN_OPTIONS  := detect_leaks=1:strict_init_order=1
+SAN_UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1:suppressions=$(CURDIR)/.ci/ubsan.supp
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench eval clean
+.PHONY: all deps configure build demo test test-sanitize fuzz fuzz-build bench eval clean
 
 all: build
 
@@ -51,6 +61,24 @@ demo: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer (gcc, like MRPT): any finding
+# aborts the test that triggered it. -O1 -g1 keeps the build affordable on two cores.
+test-sanitize: deps
+	cmake -S . -B $(SAN_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
+	  -DSTAIRMAP_SANITIZE=ON -DSTAIRMAP_BUILD_BENCH=OFF
+	cmake --build $(SAN_DIR) -j $(JOBS)
+	cd $(SAN_DIR) && ASAN_OPTIONS=$(SAN_ASAN_OPTIONS) UBSAN_OPTIONS=$(SAN_UBSAN_OPTIONS) \
+	  ctest --output-on-failure -j $(JOBS)
+
+# libFuzzer drivers (fuzz/, clang) over the seed corpora; each target runs FUZZ_SECONDS seconds.
+fuzz-build: deps
+	CXX=clang++-14 cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
+	  -DSTAIRMAP_BUILD_FUZZ=ON -DSTAIRMAP_BUILD_TESTS=OFF -DSTAIRMAP_BUILD_BENCH=OFF
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target $(FUZZ_TARGETS)
+
+fuzz: fuzz-build
+	fuzz/run-all $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 bench: build
 	@for b in $(BUILD_DIR)/bin/bench_*; do echo "== $$b"; $$b --benchmark_min_time=0.2 || exit 1; done

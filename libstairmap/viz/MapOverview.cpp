@@ -12,13 +12,22 @@ namespace {
 
 using mrpt::img::TColor;
 
+/// A pixel coordinate computed in double, clamped to +-1e6 before the conversion to int: far or
+/// non-finite world coordinates (an extent that overflows to infinity gives 0 * inf = NaN) then
+/// land off the image, where drawing clips them, instead of overflowing int.
+int toPixel(double v) {
+    constexpr double kFar = 1e6;
+    if (!(v > -kFar)) return -static_cast<int>(kFar);  // also NaN
+    return static_cast<int>(std::min(v, kFar));
+}
+
 /// World (a, b) -> pixel mapping of one panel: a to the right, b up; same scale on both axes.
 struct PanelProjection {
     int x0 = 0, y0 = 0, size = 0;
     double a_min = 0, b_min = 0, scale = 1;
 
-    int px(double a) const { return x0 + 10 + static_cast<int>((a - a_min) * scale); }
-    int py(double b) const { return y0 + size - 10 - static_cast<int>((b - b_min) * scale); }
+    int px(double a) const { return toPixel(x0 + 10 + std::floor((a - a_min) * scale)); }
+    int py(double b) const { return toPixel(y0 + size - 10 - std::floor((b - b_min) * scale)); }
 };
 
 struct Bounds {

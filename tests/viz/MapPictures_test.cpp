@@ -82,5 +82,21 @@ TEST(MapPictures, OverviewShowsTheStaircaseInRed) {
     EXPECT_GT(red, 100);  // 4 edges x ~1.2 m at ~70 px/m, 2 px wide, plus the label
 }
 
+// Coordinates so far apart that the extent overflows to infinity: the pixel arithmetic once
+// overflowed int (UBSan: signed overflow in MapOverview.cpp). The near staircase must still be
+// drawn (the far points squeeze it into a few pixels, so only its presence is checked).
+TEST(MapPictures, OverviewSurvivesFarAndNonFiniteExtents) {
+    VoxelMap voxels;
+    voxels.insertScan({{-2, -2, 0}, {4, 2, 0}}, Eigen::Vector3d::Zero());
+    MapView view = smallView(voxels);
+    view.trajectory.push_back({1.5e308, -1.5e308, 1e308});
+    view.trajectory.push_back({-1.5e308, 1.5e308, -1e308});
+    const std::string path = scratch("overview_far.png");
+    ASSERT_NO_THROW(saveMapOverview(view, path, OverviewParams{}));
+    mrpt::img::CImage img;
+    ASSERT_TRUE(img.loadFromFile(path));
+    EXPECT_EQ(img.getWidth(), 2u * OverviewParams{}.panel_px);
+}
+
 }  // namespace
 }  // namespace stairmap::viz

@@ -16,8 +16,12 @@ Eigen::Isometry3d mountPose(const IniFieldReader& ini, const std::string& s) {
                   Eigen::AngleAxisd(ini.getDouble(s, "mount_pitch_deg", 0.0) * kDeg, Eigen::Vector3d::UnitY()) *
                   Eigen::AngleAxisd(ini.getDouble(s, "mount_roll_deg", 0.0) * kDeg, Eigen::Vector3d::UnitX()))
                      .toRotationMatrix();
-    T.translation() << ini.getDouble(s, "mount_x_m", 0.0), ini.getDouble(s, "mount_y_m", 0.0),
-        ini.getDouble(s, "mount_z_m", 0.4);
+    // Read before assigning: a getDouble that throws inside Eigen's comma initializer unwinds
+    // through its destructor, which asserts that every coefficient was set (abort in debug).
+    const double x = ini.getDouble(s, "mount_x_m", 0.0);
+    const double y = ini.getDouble(s, "mount_y_m", 0.0);
+    const double z = ini.getDouble(s, "mount_z_m", 0.4);
+    T.translation() = Eigen::Vector3d(x, y, z);
     return T;
 }
 

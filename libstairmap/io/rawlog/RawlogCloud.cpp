@@ -13,6 +13,8 @@
 
 #include "io/rawlog/RawlogCloud.h"
 #include "io/rawlog/ObservationToPoints.h"
+#include "io/rawlog/GuardedReadObject.h"
+#include "io/rawlog/RawlogScanSource.h"
 
 namespace stairmap::io {
 
@@ -62,7 +64,7 @@ PointCloud readRawlogCloud(const std::string& path) {
             const std::uint64_t position = file.getPosition();
             mrpt::serialization::CSerializable::Ptr object;
             try {
-                object = archive.ReadObject();
+                object = guardedReadObject(archive, RawlogSourceParams{}.max_object_bytes);
             } catch (const mrpt::serialization::CExceptionEOF&) {
                 if (file.getPosition() == position) break;  // clean end between two objects
                 throw;

@@ -42,10 +42,11 @@ struct RawlogSourceParams {
     double pose_tolerance_s = 0.05;  ///< [s] max |t_pose - t_scan| for CObservationRobotPose
     double tum_tolerance_s = 0.05;   ///< [s] allowed extrapolation beyond the TUM time span
     ObservationConversionParams conversion;  ///< Velodyne range limits etc.
-    /// [bytes] address space one object may take while it is deserialized (Linux RLIMIT_AS,
-    /// see GuardedReadObject.h): a corrupt size field then fails as "corrupt" instead of the
-    /// process being killed. 0 disables the cap.
-    std::uint64_t max_object_bytes = std::uint64_t(4) << 30;
+    /// [bytes] memory one object may allocate in total while it is deserialized (see
+    /// GuardedReadObject.h): a corrupt size field then fails as "corrupt" before the memory is
+    /// taken. A scan of 1 M points needs ~16 MB, so 128 MiB leaves room for any real scan and
+    /// keeps a damaged file's cost bounded. 0 disables the cap.
+    std::uint64_t max_object_bytes = std::uint64_t(128) << 20;
 };
 
 struct RawlogSourceStats {

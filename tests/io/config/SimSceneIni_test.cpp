@@ -145,5 +145,13 @@ TEST(SimSceneIni, BadValuesNameFileSectionAndKey) {
     EXPECT_THROW(loadSimulationConfig("/nonexistent/scene.ini"), std::runtime_error);
 }
 
+// Found by fuzz_ini: a bad mount_y_m / mount_z_m threw inside Eigen's comma initializer, whose
+// destructor then asserted (abort in debug and sanitizer builds) instead of reporting the key.
+TEST(SimSceneIni, BadSensorMountNamesTheKey) {
+    const std::string clouds = "[clouds]\nposes = 0 0 0 0\n";
+    expectError("[scene]\ntype = ascending\n[sensor]\nmount_y_m = abc\n" + clouds, "[sensor] mount_y_m");
+    expectError("[scene]\ntype = ascending\n[sensor]\nmount_z_m = 1e\n" + clouds, "[sensor] mount_z_m");
+}
+
 }  // namespace
 }  // namespace stairmap::io
