@@ -1,6 +1,7 @@
 #pragma once
 // A small JSON Schema (draft-07) validator for the subset stairmap's schemas in docs/ use: type
-// (a name or a list of names), required, properties, items (one schema, or a list for tuples),
+// (a name or a list of names), required, properties, additionalProperties as a schema (maps keyed
+// by name; booleans are not checked), items (one schema, or a list for tuples),
 // minItems, maxItems, minimum, maximum, exclusiveMinimum, enum, const and local
 // "#/definitions/<name>" references. Written for the tests, independently of the writers, so that
 // what stairmap writes is checked against the documented contract rather than against itself.
@@ -91,6 +92,11 @@ private:
         }
         for (const auto& [key, sub] : properties.items()) {
             if (v.contains(key)) check(v[key], sub, path + "." + key, errors);
+        }
+        const json extra = s.value("additionalProperties", json(true));
+        if (!extra.is_object()) return;
+        for (const auto& [key, value] : v.items()) {
+            if (!properties.contains(key)) check(value, extra, path + "." + key, errors);
         }
     }
 
