@@ -22,7 +22,29 @@ void requireLess(double lo, double hi, const char* field_lo, const char* field_h
     }
 }
 
+/// Grid columns beyond 2 max_range / leaf: padding of kPad + 1 empty columns per side plus one
+/// spare column for float rounding (TopView.cpp).
+constexpr double kGridPadColumns = 10.0;
+
+void requireGridBudget(const DetectorParams& p) {
+    if (p.topViewGridBytes() <= static_cast<double>(kMaxTopViewGridBytes)) return;
+    const double side = std::sqrt(kMaxTopViewGridBytes / 8.0) - kGridPadColumns;
+    const auto decimetres = static_cast<long long>(side * p.leaf_size_m / 2.0 * 10.0);
+    throw std::invalid_argument(
+        "DetectorParams.max_range_m = " + std::to_string(p.max_range_m) + " with leaf_size_m = " +
+        std::to_string(p.leaf_size_m) + " needs a top-view grid of " +
+        std::to_string(static_cast<long long>(p.topViewGridBytes() / (1 << 20))) +
+        " MiB, more than the budget of " + std::to_string(kMaxTopViewGridBytes >> 20) +
+        " MiB: use max_range_m <= " + std::to_string(decimetres / 10) + "." +
+        std::to_string(decimetres % 10) + " at this leaf_size_m");
+}
+
 }  // namespace
+
+double DetectorParams::topViewGridBytes() const {
+    const double side = std::ceil(2.0 * max_range_m / leaf_size_m) + kGridPadColumns;
+    return side * side * 8.0;
+}
 
 void DetectorParams::validate() const {
     requireRange(leaf_size_m, 0.005, 0.2, "leaf_size_m");
@@ -61,6 +83,7 @@ void DetectorParams::validate() const {
     requireRange(init_height_factor, 1.0, 20.0, "init_height_factor");
     requireRange(min_steps, 2, 1000, "min_steps");
     requireRange(max_staircases_per_direction, 1, 1000, "max_staircases_per_direction");
+    requireGridBudget(*this);
     if (floor_tolerance_m >= min_step_height_m) {
         throw std::invalid_argument(
             "DetectorParams.floor_tolerance_m must be smaller than min_step_height_m");

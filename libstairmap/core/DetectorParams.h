@@ -3,12 +3,22 @@
 // them. Field names match the keys of the [detector] section of config/default.ini.
 // Frame: gravity-aligned robot frame (x forward, y left, z up); heights are relative to the floor.
 
+#include <cstddef>
+
 namespace stairmap {
+
+/// [bytes] memory budget of the detector's top-view grid (TopView.h). The grid covers the points'
+/// XY bounding box cropped to +-max_range_m (points beyond are dropped, never gridded), so its
+/// worst case is (2 max_range_m / leaf_size_m + 10)^2 columns of 8 bytes; validate() rejects
+/// configurations whose worst case exceeds this. Defaults (10 m, 2.5 cm): 5.2 MB.
+constexpr std::size_t kMaxTopViewGridBytes = std::size_t{128} << 20;
 
 struct DetectorParams {
     // --- Pre-processing (Sec. III-A) ---
     double leaf_size_m = 0.025;            ///< [m] voxel / top-view XY cell size (paper Sec. IV-A)
-    double max_range_m = 10.0;             ///< [m] points farther than this in XY are ignored
+    /// [m] points farther than this in XY are ignored. Bounded with leaf_size_m by the grid budget
+    /// kMaxTopViewGridBytes: at most 51 m at 2.5 cm, 20 m at 1 cm, 10 m at 5 mm.
+    double max_range_m = 10.0;
     double max_height_above_floor_m = 3.0; ///< [m] points higher above the floor are ignored
     double max_depth_below_floor_m = 3.0;  ///< [m] points lower below the floor are ignored
     double row_height_m = 0.025;           ///< [m] z bin of the cylindrical organisation
@@ -75,8 +85,12 @@ struct DetectorParams {
     bool detect_ascending = true;          ///< search above-ground lines
     bool detect_descending = true;         ///< search below-ground lines
 
-    /// Throws std::invalid_argument naming the first field that is out of range.
+    /// Throws std::invalid_argument naming the first field that is out of range, or max_range_m
+    /// (with leaf_size_m) when the top-view grid could exceed kMaxTopViewGridBytes.
     void validate() const;
+
+    /// [bytes] the top-view grid for points spread over the whole configured range (worst case).
+    double topViewGridBytes() const;
 };
 
 }  // namespace stairmap

@@ -40,8 +40,11 @@ struct TopViewParams {
 };
 
 /// Builds the top view of `cloud` (robot frame, robot at the XY origin) and writes the columns that
-/// are nosing candidates (flags != 0) into `cells`, which is cleared first. Non-finite points are ignored. Cost: two passes over the cloud plus one over a
-/// flat XY array spanning the points' bounding box (no hashing, no sorting of points).
+/// are nosing candidates (flags != 0) into `cells`, which is cleared first. Non-finite points are ignored.
+/// Cost: two passes over the cloud plus one over a flat XY array spanning the points' bounding box
+/// cropped to +-max_range_m (no hashing, no sorting of points). Memory: that array, 8 bytes per
+/// leaf x leaf column, at most (2 max_range_m / leaf_m + 10)^2 x 8 bytes whatever the cloud
+/// (DetectorParams::validate bounds it by kMaxTopViewGridBytes), plus 16 bytes per candidate.
 void buildTopView(const PointCloud& cloud, const TopViewParams& params,
                   std::vector<TopViewCell>& cells);
 

@@ -27,6 +27,35 @@ TEST(DetectorParams, DefaultsAreValidAndFollowThePaper) {
     EXPECT_DOUBLE_EQ(p.init_height_factor, 3.5);  // 2.5 missed flights with hidden first steps
 }
 
+TEST(DetectorParams, TopViewGridBudgetBoundsRangeOverLeaf) {
+    // Worst case (2 r / leaf + 10)^2 columns of 8 bytes <= 128 MiB: r / leaf <= 2043.
+    DetectorParams p;
+    EXPECT_NEAR(p.topViewGridBytes(), 810.0 * 810.0 * 8.0, 1.0);  // 10 m at 2.5 cm: 5.2 MB
+    for (const auto& [range, leaf] : {std::pair{51.0, 0.025}, std::pair{20.4, 0.01}, std::pair{10.2, 0.005},
+                                      std::pair{200.0, 0.2}}) {
+        p.max_range_m = range;
+        p.leaf_size_m = leaf;
+        EXPECT_NO_THROW(p.validate()) << range << " m at " << leaf;
+        EXPECT_LE(p.topViewGridBytes(), double(kMaxTopViewGridBytes));
+        p.max_range_m = range * 1.01;  // just beyond (or beyond the 200 m range limit)
+        EXPECT_THROW(p.validate(), std::invalid_argument) << range * 1.01 << " m at " << leaf;
+    }
+}
+
+TEST(DetectorParams, GridBudgetErrorSaysWhatFits) {
+    DetectorParams p;
+    p.max_range_m = 200;
+    try {
+        p.validate();
+        FAIL() << "accepted a 2 GB grid";
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("max_range_m = 200"), std::string::npos) << what;
+        EXPECT_NE(what.find("leaf_size_m"), std::string::npos) << what;
+        EXPECT_NE(what.find("max_range_m <= 51.0"), std::string::npos) << what;
+    }
+}
+
 struct BadValue {
     std::string field;
     std::function<void(DetectorParams&)> spoil;
@@ -60,7 +89,14 @@ INSTANTIATE_TEST_SUITE_P(
                     BadValue{"point_sigma_m", [](DetectorParams& p) { p.point_sigma_m = -1; }},
                     BadValue{"floor_tolerance_m",
                              [](DetectorParams& p) { p.floor_tolerance_m = 0.2; }},
-                    BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }}),
+                    BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }},
+                    // Top-view grid over the memory budget (the far-extent case of issue 8).
+                    BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},
+                    BadValue{"max_range_m",
+                             [](DetectorParams& p) {
+                                 p.max_range_m = 21;
+                                 p.leaf_size_m = 0.01;
+                             }}),
     [](const testing::TestParamInfo<BadValue>& param_info) {
         return param_info.param.field + "_" + std::to_string(param_info.index);
     });

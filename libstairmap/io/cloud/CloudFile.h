@@ -11,13 +11,26 @@
 // Non-finite points (NaN/Inf in x, y or z) are dropped on read. A file that declares zero points
 // gives an empty cloud (not an error); a zero-byte file is an error.
 // Cost: linear in the file size; binary formats are read in one pass without extra copies.
+//
+// Memory budget (hostile files, docs/detect-io.md): a cloud holds at most kMaxCloudPoints points
+// (12 bytes each in memory); a gzipped file is inflated while it is parsed, never as a whole, and
+// may decompress to at most kMaxGunzipCloudBytes; text lines are at most kMaxCloudLineBytes long;
+// a binary header's declared data must fit in the bytes that follow it (checked before anything
+// is allocated for it); a PCD point record is at most kMaxPcdPointBytes. Past any limit the reader
+// throws, naming the limit.
 
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 
 #include "core/PointCloud.h"
 
 namespace stairmap::io {
+
+constexpr std::size_t kMaxCloudPoints = 4'000'000;            ///< points per cloud file
+constexpr std::size_t kMaxGunzipCloudBytes = std::size_t{256} << 20;  ///< [bytes] inflated .gz data
+constexpr std::size_t kMaxCloudLineBytes = std::size_t{1} << 20;   ///< [bytes] one text line
+constexpr std::size_t kMaxPcdPointBytes = std::size_t{1} << 20;    ///< [bytes] one PCD point record
 
 enum class CloudFileEncoding {
     Ascii,   ///< human-readable text

@@ -1,5 +1,7 @@
 #include "io/cloud/CloudFileParsing.h"
 
+#include "io/cloud/CloudFile.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -9,6 +11,7 @@
 #include <istream>
 #include <ostream>
 #include <stdexcept>
+#include <streambuf>
 
 namespace stairmap::io::detail {
 
@@ -45,12 +48,55 @@ bool parseCount(std::string_view token, std::size_t& value) {
     return ec == std::errc() && ptr == end;
 }
 
+bool readLine(std::istream& in, std::string& line) {
+    line.clear();
+    std::streambuf* buf = in.rdbuf();
+    constexpr int kEof = std::char_traits<char>::eof();
+    for (int c = buf->sbumpc(); c != '\n'; c = buf->sbumpc()) {
+        if (c == kEof) {
+            in.setstate(std::ios::eofbit);
+            if (line.empty()) in.setstate(std::ios::failbit);
+            return !line.empty();
+        }
+        if (line.size() == kMaxCloudLineBytes) {
+            throw std::runtime_error("a line is longer than " + std::to_string(kMaxCloudLineBytes) +
+                                     " bytes (not a text cloud, or no line breaks)");
+        }
+        line.push_back(static_cast<char>(c));
+    }
+    return true;
+}
+
+std::size_t bytesLeft(std::istream& in) {
+    const std::istream::pos_type here = in.tellg();
+    if (here == std::istream::pos_type(-1)) {
+        in.clear(in.rdstate() & ~std::ios::failbit);
+        return kMaxGunzipCloudBytes;
+    }
+    in.seekg(0, std::ios::end);
+    const std::istream::pos_type end = in.tellg();
+    in.seekg(here);
+    return end >= here ? static_cast<std::size_t>(end - here) : 0;
+}
+
+void checkDeclaredPoints(std::size_t declared) {
+    if (declared > kMaxCloudPoints) {
+        throw std::runtime_error("header declares " + std::to_string(declared) +
+                                 " points, more than the limit of " + std::to_string(kMaxCloudPoints) +
+                                 " points per cloud file (downsample the cloud)");
+    }
+}
+
 PointCollector::PointCollector(std::size_t expected) {
     // Never trust a header's count for allocation: a corrupt header must not exhaust memory.
     cloud_.reserve(std::min<std::size_t>(expected, std::size_t{1} << 20));
 }
 
 void PointCollector::add(double x, double y, double z) {
+    if (num_read_ == kMaxCloudPoints) {
+        throw std::runtime_error("more than " + std::to_string(kMaxCloudPoints) +
+                                 " points, the limit of a cloud file (downsample the cloud)");
+    }
     ++num_read_;
     const Eigen::Vector3f p(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
     if (p.allFinite()) cloud_.push_back(p);

@@ -2,13 +2,11 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <sstream>
 #include <stdexcept>
 
 #include "io/cloud/CloudFile.h"
 #include "io/cloud/CloudFileFormat.h"
-#include "io/cloud/GzipBuffer.h"
+#include "io/cloud/GunzipStream.h"
 #include "io/rawlog/RawlogCloud.h"
 
 namespace stairmap::io {
@@ -35,17 +33,27 @@ PointCloud readFormat(std::istream& in, CloudFileFormat format) {
     }
 }
 
+/// .pcd.gz etc.: inflated while it is parsed (never whole in memory), within the gzip budget.
+PointCloud readGzipped(std::istream& in, CloudFileFormat format) {
+    GunzipStream plain(in, kMaxGunzipCloudBytes);
+    PointCloud cloud;
+    try {
+        cloud = readFormat(plain, format);
+    } catch (const std::runtime_error&) {
+        // The reader saw the data end early: the gzip problem behind it is the real error.
+        if (!plain.error().empty()) throw std::runtime_error(plain.error());
+        throw;
+    }
+    plain.finish();  // the rest must inflate cleanly (CRC, no trailing data)
+    return cloud;
+}
+
 PointCloud readStreamFormat(const std::string& path, CloudFileFormat format) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot be opened for reading");
     try {
         if (!isGzippedCloudPath(path)) return readFormat(in, format);
-        // .pcd.gz etc.: inflate the whole file in memory, then parse it like the plain format.
-        const std::string compressed{std::istreambuf_iterator<char>(in),
-                                     std::istreambuf_iterator<char>()};
-        if (in.bad()) throw std::runtime_error("read error");
-        std::istringstream plain(gunzipBuffer(compressed), std::ios::binary);
-        return readFormat(plain, format);
+        return readGzipped(in, format);
     } catch (const std::exception& e) {
         throw std::runtime_error(path + ": " + e.what());
     }

@@ -2,17 +2,17 @@
 
 #include <zlib.h>
 
+#include <sstream>
 #include <stdexcept>
+#include <vector>
+
+#include "io/cloud/GunzipStream.h"
 
 namespace stairmap::io {
 
 namespace {
 constexpr int kGzipWindowBits = 15 + 16;  // zlib: +16 selects the gzip wrapper
 constexpr std::size_t kChunk = 1 << 16;
-
-std::string zlibMessage(const z_stream& z, int code) {
-    return z.msg ? z.msg : ("zlib code " + std::to_string(code));
-}
 }  // namespace
 
 std::string gzipBuffer(const std::string& data, int level) {
@@ -35,41 +35,13 @@ std::string gzipBuffer(const std::string& data, int level) {
 }
 
 std::string gunzipBuffer(const std::string& compressed, std::size_t max_bytes) {
-    if (compressed.size() < 2 || static_cast<unsigned char>(compressed[0]) != 0x1f ||
-        static_cast<unsigned char>(compressed[1]) != 0x8b)
-        throw std::runtime_error("not gzip data (no gzip signature 1f 8b)");
-    if (compressed.size() > kMaxGunzipBytes)  // zlib counts input in 32-bit words
-        throw std::runtime_error("compressed data larger than " + std::to_string(kMaxGunzipBytes) + " bytes");
-    z_stream z{};
-    if (inflateInit2(&z, kGzipWindowBits) != Z_OK) throw std::runtime_error("zlib inflateInit2 failed");
-    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
-    z.avail_in = static_cast<uInt>(compressed.size());
+    std::istringstream source(compressed, std::ios::binary);
+    GunzipStream in(source, max_bytes);
     std::string out;
-    int code = Z_OK;
-    while (code != Z_STREAM_END) {
-        const std::size_t before = out.size();
-        out.resize(before + kChunk);
-        z.next_out = reinterpret_cast<Bytef*>(out.data() + before);
-        z.avail_out = static_cast<uInt>(kChunk);
-        code = inflate(&z, Z_NO_FLUSH);
-        out.resize(before + kChunk - z.avail_out);
-        if (code == Z_BUF_ERROR || (code == Z_OK && z.avail_in == 0 && z.avail_out != 0)) {
-            inflateEnd(&z);
-            throw std::runtime_error("truncated gzip data");
-        }
-        if (code != Z_OK && code != Z_STREAM_END) {
-            const std::string message = zlibMessage(z, code);
-            inflateEnd(&z);
-            throw std::runtime_error("corrupt gzip data (" + message + ")");
-        }
-        if (out.size() > max_bytes) {
-            inflateEnd(&z);
-            throw std::runtime_error("decompresses to more than " + std::to_string(max_bytes) + " bytes");
-        }
-    }
-    const bool trailing = z.avail_in != 0;
-    inflateEnd(&z);
-    if (trailing) throw std::runtime_error("trailing data after the gzip stream");
+    std::vector<char> chunk(kChunk);
+    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+        out.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    in.finish();
     return out;
 }
 

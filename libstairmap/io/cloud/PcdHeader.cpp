@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/cloud/CloudFile.h"
 #include "io/cloud/CloudFileParsing.h"
 
 namespace stairmap::io::detail {
@@ -13,6 +14,7 @@ namespace {
 
 constexpr std::size_t kMaxHeaderLines = 256;
 constexpr std::size_t kMaxElementsPerField = 100000;
+constexpr std::size_t kMaxFields = 10000;
 
 [[noreturn]] void fail(const std::string& what) { throw std::runtime_error("bad PCD header: " + what); }
 
@@ -26,7 +28,7 @@ std::size_t countOf(const std::string& key, std::string_view word) {
 std::map<std::string, std::vector<std::string>> readHeaderTable(std::istream& in) {
     std::map<std::string, std::vector<std::string>> table;
     std::string line;
-    for (std::size_t n = 0; n < kMaxHeaderLines && std::getline(in, line); ++n) {
+    for (std::size_t n = 0; n < kMaxHeaderLines && readLine(in, line); ++n) {
         if (!line.empty() && line[0] == '#') continue;
         const auto words = splitWords(line);
         if (words.empty()) continue;
@@ -57,6 +59,7 @@ std::vector<PcdField> parseFields(const std::map<std::string, std::vector<std::s
     const auto& types = required(t, "TYPE");
     const std::vector<std::string> ones(names.size(), "1");
     const auto& counts = t.count("COUNT") ? t.at("COUNT") : ones;
+    if (names.size() > kMaxFields) fail("more than " + std::to_string(kMaxFields) + " FIELDS");
     if (sizes.size() != names.size() || types.size() != names.size() || counts.size() != names.size()) {
         fail("FIELDS, SIZE, TYPE and COUNT list different numbers of entries");
     }
@@ -116,6 +119,10 @@ PcdHeader readPcdHeader(std::istream& in) {
         f.column = h.point_columns;
         h.point_bytes += f.size * f.count;
         h.point_columns += f.count;
+        // One record is read at a time at least: bound it (sizes <= 8, counts <= 1e5: no overflow).
+        if (h.point_bytes > kMaxPcdPointBytes) {
+            fail("a point record is larger than " + std::to_string(kMaxPcdPointBytes) + " bytes");
+        }
     }
     locateXyz(h);
     parseCounts(h, table);

@@ -1,5 +1,6 @@
 // PCD reader: DATA ascii and binary, any FIELDS that include x y z (extra fields are skipped).
 
+#include <algorithm>
 #include <istream>
 #include <stdexcept>
 #include <string>
@@ -19,7 +20,7 @@ PointCloud readPcdAscii(std::istream& in, const PcdHeader& h) {
     detail::PointCollector points(h.num_points);
     std::string line;
     std::size_t n = 0;
-    while (std::getline(in, line)) {
+    while (detail::readLine(in, line)) {
         const auto words = detail::splitWords(line);
         if (words.empty()) continue;
         if (n == h.num_points) {
@@ -47,9 +48,21 @@ PointCloud readPcdAscii(std::istream& in, const PcdHeader& h) {
     return points.finish();
 }
 
+/// Before allocating anything for them: the declared points must fit in the bytes that follow.
+void checkBinarySize(std::istream& in, const PcdHeader& h) {
+    const std::size_t left = detail::bytesLeft(in);
+    if (h.num_points > left / h.point_bytes) {
+        throw std::runtime_error("truncated binary data: header declares " + std::to_string(h.num_points) +
+                                 " points of " + std::to_string(h.point_bytes) + " bytes, the file holds " +
+                                 std::to_string(left) + " bytes after the header");
+    }
+}
+
 PointCloud readPcdBinary(std::istream& in, const PcdHeader& h) {
+    checkBinarySize(in, h);
     detail::PointCollector points(h.num_points);
-    constexpr std::size_t kChunkPoints = 4096;
+    // Chunks of about 1 MiB (at least one record) whatever the record size.
+    const std::size_t kChunkPoints = std::max<std::size_t>(1, (std::size_t{1} << 20) / h.point_bytes);
     std::vector<char> buffer;
     std::size_t n = 0;
     while (n < h.num_points) {
@@ -84,6 +97,7 @@ PointCloud readPcdBinary(std::istream& in, const PcdHeader& h) {
 
 PointCloud readPcd(std::istream& in) {
     const PcdHeader header = detail::readPcdHeader(in);
+    detail::checkDeclaredPoints(header.num_points);
     return header.encoding == detail::PcdEncoding::Ascii ? readPcdAscii(in, header) : readPcdBinary(in, header);
 }
 

@@ -83,12 +83,12 @@ void locateVertexXyz(PlyHeader& h) {
 
 PlyHeader readPlyHeader(std::istream& in) {
     std::string line;
-    if (!std::getline(in, line) || splitWords(line).size() != 1 || splitWords(line)[0] != "ply") {
+    if (!readLine(in, line) || splitWords(line).size() != 1 || splitWords(line)[0] != "ply") {
         fail("the file does not start with 'ply' (not a PLY file?)");
     }
     PlyHeader h;
     bool have_format = false;
-    for (std::size_t n = 0; n < kMaxHeaderLines && std::getline(in, line); ++n) {
+    for (std::size_t n = 0; n < kMaxHeaderLines && readLine(in, line); ++n) {
         const auto words = splitWords(line);
         if (words.empty() || words[0] == "comment" || words[0] == "obj_info") continue;
         if (words[0] == "end_header") {

@@ -28,7 +28,7 @@ using detail::PlyScalar;
 
 /// Words of the next non-blank line; empty at the end of the stream.
 std::vector<std::string_view> nextWords(std::istream& in, std::string& line) {
-    while (std::getline(in, line)) {
+    while (detail::readLine(in, line)) {
         auto words = detail::splitWords(line);
         if (!words.empty()) return words;
     }
@@ -119,8 +119,14 @@ PointCloud readFixedSizeVertices(std::istream& in, const PlyElement& vertex, con
         }
         record_bytes += vertex.properties[p].value.size;
     }
+    const std::size_t left = detail::bytesLeft(in);  // checked before anything is allocated
+    if (record_bytes == 0 || vertex.count > left / record_bytes) {
+        throw std::runtime_error("truncated data: element 'vertex' declares " + std::to_string(vertex.count) +
+                                 " entries of " + std::to_string(record_bytes) + " bytes, the file holds " +
+                                 std::to_string(left) + " bytes for them");
+    }
     detail::PointCollector points(vertex.count);
-    constexpr std::size_t kChunk = 4096;
+    const std::size_t kChunk = std::max<std::size_t>(1, (std::size_t{1} << 20) / record_bytes);
     std::vector<char> buffer;
     for (std::size_t done = 0; done < vertex.count;) {
         const std::size_t chunk = std::min(kChunk, vertex.count - done);
@@ -167,6 +173,7 @@ PointCloud readPlyBinary(std::istream& in, const PlyHeader& h) {
 
 PointCloud readPly(std::istream& in) {
     const PlyHeader header = detail::readPlyHeader(in);
+    detail::checkDeclaredPoints(header.elements[header.vertex_element].count);
     return header.encoding == detail::PlyEncoding::Ascii ? readPlyAscii(in, header) : readPlyBinary(in, header);
 }
 

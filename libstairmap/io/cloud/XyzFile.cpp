@@ -26,7 +26,7 @@ PointCloud readXyz(std::istream& in) {
     detail::PointCollector points;
     std::string line;
     std::size_t line_number = 0;
-    while (std::getline(in, line)) {
+    while (detail::readLine(in, line)) {
         ++line_number;
         const auto words = dataWords(line);
         if (words.empty()) continue;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "io/json/JsonFields.h"
+#include "io/json/LandmarkPlausibility.h"
 #include "io/json/LandmarkParamsJson.h"
 
 namespace stairmap::io {
@@ -196,6 +197,15 @@ void checkHeader(const json& doc) {
     jf::arrayMember(doc, "floors", "");
 }
 
+/// The reported floors are recomputed on the next save, but a loaded document must still be sane.
+void checkReportedFloors(const json& doc) {
+    const json& floors = jf::arrayMember(doc, "floors", "");
+    for (std::size_t i = 0; i < floors.size(); ++i) {
+        const std::string path = "floors[" + std::to_string(i) + "]";
+        checkWorldZ(numberField(floors[i], "z", path), path + ".z");
+    }
+}
+
 }  // namespace
 
 json landmarkStateToJson(const LandmarkMapState& state, const LandmarkParams& params) {
@@ -231,6 +241,8 @@ LandmarkMapState landmarkStateFromJson(const json& doc, LandmarkParams* params_o
     }
     readContinuation(jf::member(doc, "continuation", ""), state);
     const LandmarkParams params = landmarkParamsFromJson(jf::member(doc, "params", ""), "params");
+    checkReportedFloors(doc);
+    checkLandmarkPlausibility(state);
     if (params_out) *params_out = params;
     return state;
 }

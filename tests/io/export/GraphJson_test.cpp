@@ -11,7 +11,7 @@
 
 #include "export/SyntheticLandmarks.h"
 #include "io/export/SpotJson.h"
-#include "io/json/MiniSchemaValidator.h"
+#include "support/JsonSchemaValidator.h"
 
 namespace stairmap::io {
 namespace {
@@ -36,11 +36,7 @@ exporting::FloorGraph testGraph(std::vector<exporting::RobotProfile>& profiles) 
     return exporting::buildFloorGraph(stairs, floors, {}, profiles);
 }
 
-test::MiniSchemaValidator schema() {
-    std::ifstream in(std::string(STAIRMAP_SOURCE_DIR) + "/docs/graph.schema.json");
-    EXPECT_TRUE(in.good()) << "docs/graph.schema.json missing";
-    return test::MiniSchemaValidator(json::parse(in));
-}
+test::JsonSchemaValidator schema() { return test::JsonSchemaValidator::fromDocs("graph.schema.json"); }
 
 TEST(GraphJson, ConformsToTheSchema) {
     std::vector<exporting::RobotProfile> profiles;

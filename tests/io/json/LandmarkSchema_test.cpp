@@ -1,23 +1,20 @@
-// The written landmarks.json conforms to docs/landmarks.schema.json (json/MiniSchemaValidator.h).
+// The written landmarks.json conforms to docs/landmarks.schema.json, checked by the tests' own
+// validator for the draft-07 subset the schemas use (tests/support/JsonSchemaValidator.h).
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "io/json/LandmarkJson.h"
-#include "io/json/MiniSchemaValidator.h"
 #include "map/LandmarkTestMaps.h"
+#include "support/JsonSchemaValidator.h"
 
 namespace stairmap {
 namespace {
 
 using nlohmann::json;
-using test::MiniSchemaValidator;
+using test::JsonSchemaValidator;
 
-MiniSchemaValidator loadSchema() {
-    std::ifstream in(std::string(STAIRMAP_SOURCE_DIR) + "/docs/landmarks.schema.json");
-    EXPECT_TRUE(in.good());
-    return MiniSchemaValidator(json::parse(in));
-}
+JsonSchemaValidator loadSchema() { return JsonSchemaValidator::fromDocs("landmarks.schema.json"); }
 
 json writtenDocument() {
     const std::string path = test::scratchDir("schema") + "/landmarks.json";
@@ -35,7 +32,7 @@ TEST(LandmarkSchema, WrittenDocumentConforms) {
 
 TEST(LandmarkSchema, ValidatorCatchesViolations) {
     // The check above is only meaningful if the schema rejects broken documents.
-    const MiniSchemaValidator validator = loadSchema();
+    const JsonSchemaValidator validator = loadSchema();
     json doc = writtenDocument();
     doc["staircases"][0].erase("top_floor");
     doc["staircases"][1]["location"] = {1.0, 2.0};
@@ -50,6 +47,26 @@ TEST(LandmarkSchema, ValidatorCatchesViolations) {
     EXPECT_TRUE(has("$.staircases[1].location: too few items"));
     EXPECT_TRUE(has("$.floors[0].z: expected number"));
     EXPECT_TRUE(has("$.version: const mismatch"));
+}
+
+TEST(LandmarkSchema, StatesThePlausibilityBounds) {
+    // The schema carries the bounds the loader checks (docs/landmarks.md): a far coordinate, a
+    // 40 m rise and a negative variance are violations, the same values just inside are not.
+    const JsonSchemaValidator validator = loadSchema();
+    json doc = writtenDocument();
+    doc["staircases"][0]["location"][0] = 1e12;
+    doc["staircases"][0]["steps"][0]["end"][2] = -2e4;
+    doc["staircases"][0]["step_height"] = 40.0;
+    doc["staircases"][0]["steps"][0]["cov_rho_theta"][1][1] = -1e-6;
+    const std::vector<std::string> errors = validator.validate(doc);
+    EXPECT_TRUE(test::anyErrorSays(errors, "$.staircases[0].location[0]: above maximum"));
+    EXPECT_TRUE(test::anyErrorSays(errors, "$.staircases[0].steps[0].end[2]: below minimum"));
+    EXPECT_TRUE(test::anyErrorSays(errors, "$.staircases[0].step_height: above maximum"));
+    EXPECT_TRUE(test::anyErrorSays(errors, "$.staircases[0].steps[0].cov_rho_theta[1][1]: below minimum"));
+    EXPECT_EQ(errors.size(), 4u) << ::testing::PrintToString(errors);
+    json inside = writtenDocument();
+    inside["staircases"][0]["location"] = {-1e5, 1e5, 1e4};
+    EXPECT_TRUE(validator.validate(inside).empty());
 }
 
 }  // namespace
