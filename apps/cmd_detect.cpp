@@ -13,7 +13,7 @@
 #include "core/StairDetector.h"
 #include "io/cloud/CloudFile.h"
 #include "io/config/DetectorConfig.h"
-#include "io/config/IniFile.h"
+#include "io/config/ConfigFile.h"
 #include "io/json/StaircaseJson.h"
 
 namespace stairmap::apps {
@@ -53,12 +53,7 @@ struct DetectOptions {
 
 io::DetectorConfig loadConfig(const std::string& config_path) {
     if (config_path.empty()) return {};  // built-in defaults
-    const auto cfg = io::openIniFile(config_path);
-    try {
-        return io::loadDetectorConfig(*cfg, "detector");
-    } catch (const std::exception& e) {
-        throw std::runtime_error(config_path + ": " + e.what());
-    }
+    return io::loadDetectorConfigFile(config_path);
 }
 
 /// --robot-height wins over the config; no height at all means "estimate the floor".
