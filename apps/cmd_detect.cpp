@@ -111,7 +111,10 @@ Command addDetectCommand(CLI::App& app) {
                             "[m] height of the robot frame origin above the floor it stands on (floor z = -H)");
     command.cli->add_option("--config", options->config_path,
                             "MRPT-style INI file; its [detector] section overrides the built-in defaults");
-    command.run = [options]() -> int { return runDetect(*options); };
+    command.run = [options, input = command.input]() -> int {
+        *input = options->cloud_path;
+        return runDetect(*options);
+    };
     return command;
 }
 

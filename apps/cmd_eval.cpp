@@ -123,7 +123,10 @@ Command addEvalCommand(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     command.cli->add_option("--max-z", options->params.max_z_m, "[m] matching: median z distance")
         ->check(CLI::PositiveNumber);
-    command.run = [options]() { return runEval(*options); };
+    command.run = [options, input = command.input]() {
+        for (const auto& path : options->inputs) *input += (input->empty() ? "" : ", ") + path;
+        return runEval(*options);
+    };
     return command;
 }
 
