@@ -140,7 +140,9 @@ std::size_t addSpiralStair(Scene& scene, const SpiralStairParams& p) {
         scene.add(w);
     }
     const double top_z = p.centre.z() + p.num_risers * p.rise_m;
-    scene.add(Cylinder{p.centre.head<2>(), p.column_radius_m, p.centre.z(), top_z + 2.0});
+    if (p.central_column) {
+        scene.add(Cylinder{p.centre.head<2>(), p.column_radius_m, p.centre.z(), top_z + 2.0});
+    }
 
     StaircaseTruth truth;
     truth.name = p.name;

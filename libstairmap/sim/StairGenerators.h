@@ -49,6 +49,8 @@ struct SpiralStairParams {
     bool clockwise = false;
     double tread_thickness_m = 0.0;  ///< [m] 0: closed risers (each wedge one rise tall)
     double landing_angle_deg = 90.0; ///< [deg] sector of the top landing
+    bool central_column = true;      ///< the solid column inside column_radius_m (false: a wide
+                                     ///< spiral around an open well, the inner edge in the air)
 };
 
 /// Adds a straight flight; returns the index of its truth in scene.truth().staircases.

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.h"
-#include "StairCloudGenerator.h"
+#include "support/SyntheticScenes.h"
 #include "io/cloud/CloudFile.h"
 
 namespace stairmap::test {
@@ -28,22 +28,25 @@ struct EndToEndCase {
     const char* extension;
     io::CloudFileEncoding encoding;
     FloorSource floor;
-    StairCloudSpec spec;
+    StairSpec spec;
+    unsigned seed;
+    bool ascending() const { return spec.kind == StairKind::Ascending; }
 };
 
 void PrintTo(const EndToEndCase& c, std::ostream* os) { *os << c.name; }
 
-StairCloudSpec spec(bool ascending, int risers, double rise, double run, double width, double distance,
-                    double yaw, unsigned seed) {
-    StairCloudSpec s;
-    s.ascending = ascending;
+constexpr double kRobotHeight = 0.6;  // [m] floor at z = -0.6 in the robot frame
+
+StairSpec spec(bool ascending, int risers, double rise, double run, double width, double distance,
+               double yaw) {
+    StairSpec s;
+    s.kind = ascending ? StairKind::Ascending : StairKind::Descending;
     s.num_risers = risers;
     s.rise_m = rise;
     s.run_m = run;
     s.width_m = width;
     s.distance_m = distance;
     s.yaw_rad = yaw;
-    s.seed = seed;
     return s;
 }
 
@@ -95,8 +98,15 @@ class DetectCliEndToEnd : public testing::TestWithParam<EndToEndCase> {};
 TEST_P(DetectCliEndToEnd, ReportsTheKnownStaircase) {
     const EndToEndCase& c = GetParam();
     const std::string dir = cliScratchDir("DetectCliEndToEnd", c.name);
-    StairCloudTruth truth;
-    const PointCloud cloud = StairCloudGenerator(c.spec).generate(truth);
+    SceneOptions options;
+    options.floor_z = -kRobotHeight;
+    options.floor_half_size_m = 6.0;  // floor all round the flight, its landing included
+    options.spacing_m = 0.007;
+    options.seed = c.seed;
+    SceneBuilder scene(options);
+    const StairTruth truth = scene.addStairs(c.spec);
+    scene.addFloor();
+    const PointCloud& cloud = scene.cloud();
     const std::string path = dir + "/stairs" + c.extension;
     if (std::string(c.extension) == ".rawlog") {
         writeRawlogCloud(path, cloud);
@@ -104,9 +114,9 @@ TEST_P(DetectCliEndToEnd, ReportsTheKnownStaircase) {
         io::writeCloudFile(path, cloud, c.encoding);
     }
     std::string args = "detect '" + path + "'";
-    if (c.floor == FloorSource::Option) args += " --robot-height " + std::to_string(c.spec.robot_height_m);
+    if (c.floor == FloorSource::Option) args += " --robot-height " + std::to_string(kRobotHeight);
     if (c.floor == FloorSource::Config) {
-        std::ofstream(dir + "/cfg.ini") << "[detector]\nrobot_height_m = " << c.spec.robot_height_m << "\n";
+        std::ofstream(dir + "/cfg.ini") << "[detector]\nrobot_height_m = " << kRobotHeight << "\n";
         args += " --config '" + dir + "/cfg.ini'";
     }
     const CliResult r = runStairmap(args, dir);
@@ -120,7 +130,7 @@ TEST_P(DetectCliEndToEnd, ReportsTheKnownStaircase) {
     SCOPED_TRACE(out.dump(1));
     ASSERT_EQ(out.at("staircases").size(), 1u) << "exactly the one staircase, no false positive";
     const json& s = out.at("staircases")[0];
-    EXPECT_EQ(s.at("direction"), c.spec.ascending ? "ascending" : "descending");
+    EXPECT_EQ(s.at("direction"), c.ascending() ? "ascending" : "descending");
     EXPECT_EQ(s.at("num_steps"), c.spec.num_risers);
     EXPECT_EQ(s.at("steps").size(), s.at("num_steps").get<std::size_t>());
     EXPECT_NEAR(s.at("step_height").get<double>(), c.spec.rise_m, 0.01);
@@ -130,16 +140,16 @@ TEST_P(DetectCliEndToEnd, ReportsTheKnownStaircase) {
     EXPECT_LT(angleDiffDeg(s.at("heading_deg").get<double>(), c.spec.yaw_rad * 180 / M_PI), 5.0);
     const Eigen::Vector3d heading(std::cos(c.spec.yaw_rad), std::sin(c.spec.yaw_rad), 0.0);
     expectEdgeCentreNear(vec3(s.at("location")), truth.location, heading, "location", 0.10);
-    const std::size_t n = std::min(s.at("steps").size(), truth.nosing_centres.size());
+    const std::size_t n = std::min(s.at("steps").size(), truth.nosings.size());
     for (std::size_t k = 0; k < n; ++k) {
         const json& step = s.at("steps")[k];
-        expectEdgeCentreNear(0.5 * (vec3(step.at("start")) + vec3(step.at("end"))), truth.nosing_centres[k], heading,
+        expectEdgeCentreNear(0.5 * (vec3(step.at("start")) + vec3(step.at("end"))), 0.5 * (truth.nosings[k].first + truth.nosings[k].second), heading,
                              "step " + std::to_string(k), 0.20);
     }
     if (c.floor != FloorSource::Estimated) {
         EXPECT_EQ(out.at("floor_estimated"), false);
     }
-    EXPECT_NEAR(out.at("floor_z").get<double>(), -c.spec.robot_height_m, 0.03);
+    EXPECT_NEAR(out.at("floor_z").get<double>(), -kRobotHeight, 0.03);
 }
 
 using Enc = io::CloudFileEncoding;
@@ -147,19 +157,19 @@ INSTANTIATE_TEST_SUITE_P(
     FormatsDirectionsYaws, DetectCliEndToEnd,
     testing::Values(
         EndToEndCase{"asc_pcd_bin_front", ".pcd", Enc::Binary, FloorSource::Option,
-                     spec(true, 6, 0.17, 0.29, 1.1, 2.0, 0.0, 1)},
+                     spec(true, 6, 0.17, 0.29, 1.1, 2.0, 0.0), 1},
         EndToEndCase{"asc_ply_ascii_back_left", ".ply", Enc::Ascii, FloorSource::Estimated,
-                     spec(true, 5, 0.15, 0.31, 1.3, 2.5, 2.4, 2)},
+                     spec(true, 5, 0.15, 0.31, 1.3, 2.5, 2.4), 2},
         EndToEndCase{"asc_xyz_right", ".xyz", Enc::Ascii, FloorSource::Config,
-                     spec(true, 7, 0.19, 0.27, 0.9, 1.6, -M_PI / 2, 3)},
+                     spec(true, 7, 0.19, 0.27, 0.9, 1.6, -M_PI / 2), 3},
         EndToEndCase{"desc_pcd_ascii_front_left", ".pcd", Enc::Ascii, FloorSource::Option,
-                     spec(false, 6, 0.18, 0.28, 1.2, 1.8, 0.5, 4)},
+                     spec(false, 6, 0.18, 0.28, 1.2, 1.8, 0.5), 4},
         EndToEndCase{"desc_ply_bin_behind", ".ply", Enc::Binary, FloorSource::Option,
-                     spec(false, 5, 0.16, 0.30, 1.0, 2.2, M_PI, 5)},
+                     spec(false, 5, 0.16, 0.30, 1.0, 2.2, M_PI), 5},
         EndToEndCase{"desc_xyz_back_right", ".xyz", Enc::Ascii, FloorSource::Estimated,
-                     spec(false, 6, 0.17, 0.32, 1.1, 2.0, -2.0, 6)},
+                     spec(false, 6, 0.17, 0.32, 1.1, 2.0, -2.0), 6},
         EndToEndCase{"asc_rawlog_tilted_sensor", ".rawlog", Enc::Binary, FloorSource::Option,
-                     spec(true, 6, 0.17, 0.28, 1.0, 2.2, 1.0, 7)}),
+                     spec(true, 6, 0.17, 0.28, 1.0, 2.2, 1.0), 7}),
     [](const testing::TestParamInfo<EndToEndCase>& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "DetectionMatching.h"
-#include "SyntheticScenes.h"
+#include "support/DetectionMatching.h"
+#include "support/SyntheticScenes.h"
 #include "core/StairDetector.h"
 
 namespace stairmap::test {
@@ -175,7 +175,6 @@ INSTANTIATE_TEST_SUITE_P(Offsets, FloorOffset, testing::Values(-0.05, -0.03, 0.0
 TEST(StairDetectorScenes, FarSparseStaircaseIsFound) {
     SceneOptions opt;
     opt.floor_half_size_m = 6.5;
-    opt.floor_spacing_m = 0.05;
     opt.sparse_from_m = 3.0;  // density falls with range squared, like an accumulated LiDAR cloud
     SceneBuilder scene(opt);
     StairSpec spec;

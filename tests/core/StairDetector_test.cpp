@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "DetectionMatching.h"
-#include "SyntheticScenes.h"
+#include "support/DetectionMatching.h"
+#include "support/SyntheticScenes.h"
 #include "core/StairDetector.h"
 
 namespace stairmap::test {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "SyntheticScenes.h"
+#include "support/SyntheticScenes.h"
 #include "core/StairDetector.h"
 
 namespace stairmap::test {

@@ -1,4 +1,4 @@
-#include "DetectionMatching.h"
+#include "support/DetectionMatching.h"
 
 #include <cmath>
 #include <limits>
