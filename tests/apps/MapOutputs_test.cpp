@@ -141,7 +141,7 @@ TEST(MapOutputs, KillAtAnyMomentNeverLeavesATruncatedOutput) {
     // Kills at random moments of a whole run ...
     std::mt19937 rng(8);
     std::uniform_real_distribution<double> moment(0.0, 1.0);
-    for (int round = 0; round < 6; ++round) {
+    for (int round = 0; round < 4; ++round) {
         const double at = moment(rng);
         SCOPED_TRACE("kill at " + std::to_string(at) + " of a run");
         const pid_t pid = spawnStairmap(mapArgs(out));
