@@ -7,12 +7,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "ChildProcess.h"
 #include "io/json/LandmarkJson.h"
@@ -20,8 +19,9 @@
 namespace stairmap::test {
 
 inline const std::vector<std::string>& mapOutputNames() {
-    static const std::vector<std::string> names = {"landmarks.json", "map.bt", "detections.jsonl",
-                                                   "scene.3Dscene", "overview.png", "stats.json"};
+    static const std::vector<std::string> names = {"landmarks.json",   "map.bt",
+                                                   "detections.jsonl", "scene.3Dscene",
+                                                   "overview.png",     "stats.json"};
     return names;
 }
 
@@ -45,7 +45,8 @@ inline std::string pngProblem(const std::string& path) {
     const std::string signature("\x89PNG\r\n\x1a\n", 8);
     const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
     if (bytes.compare(0, 8, signature) != 0) return "no PNG signature";
-    if (bytes.size() < 20 || bytes.compare(bytes.size() - 12, 12, iend) != 0) return "no IEND chunk at the end";
+    if (bytes.size() < 20 || bytes.compare(bytes.size() - 12, 12, iend) != 0)
+        return "no IEND chunk at the end";
     return "";
 }
 
@@ -81,7 +82,8 @@ inline std::string outputProblem(const std::filesystem::path& dir, const std::st
 /// Every file in `dir` (names).
 inline std::set<std::string> filesIn(const std::filesystem::path& dir) {
     std::set<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(dir)) names.insert(e.path().filename().string());
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        names.insert(e.path().filename().string());
     return names;
 }
 

@@ -3,18 +3,16 @@
 // first one's pid; SIGKILL at any moment never leaves a truncated output where a complete one
 // stood; no temp file is left behind.
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <tuple>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "ChildProcess.h"
 #include "CliRunner.h"
@@ -30,8 +28,11 @@ const std::string kData = std::string(STAIRMAP_SOURCE_DIR) + "/datasets/two_floo
 const std::string kPreset = std::string(STAIRMAP_SOURCE_DIR) + "/config/sim_legged_vlp16.ini";
 
 std::vector<std::string> mapArgs(const std::string& out) {
-    return {"map", kData + "two_floor.rawlog", "--poses", kData + "poses.tum", "--config", kPreset,
-            "--out", out, "--quiet"};
+    return {"map",      kData + "two_floor.rawlog",
+            "--poses",  kData + "poses.tum",
+            "--config", kPreset,
+            "--out",    out,
+            "--quiet"};
 }
 
 /// Scans in the bundled log: one per pose of its trajectory (the simulator writes one per scan).
@@ -77,14 +78,17 @@ TEST_P(MapStopSignal, WritesEveryOutputForTheMapSoFarAndExits128PlusSignal) {
     const std::string err = fileText(options.stderr_path);
     EXPECT_NE(err.find(signal == SIGINT ? "SIGINT" : "SIGTERM"), std::string::npos) << err;
     // The landmark map so far continues in a next run (--map-in), with the same IDs.
-    const CliResult next = runStairmap("map '" + kData + "two_floor.rawlog' --poses '" + kData +
-                                           "poses.tum' --config '" + kPreset + "' --map-in '" + out +
-                                           "/landmarks.json' --out '" + dir + "/next' --quiet", dir);
+    const CliResult next = runStairmap(
+        "map '" + kData + "two_floor.rawlog' --poses '" + kData + "poses.tum' --config '" +
+            kPreset + "' --map-in '" + out + "/landmarks.json' --out '" + dir + "/next' --quiet",
+        dir);
     EXPECT_EQ(next.exit_code, 0) << next.err;
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, MapStopSignal, ::testing::Values(SIGINT, SIGTERM),
-                         [](const auto& param_info) { return param_info.param == SIGINT ? "SIGINT" : "SIGTERM"; });
+                         [](const auto& param_info) {
+                             return param_info.param == SIGINT ? "SIGINT" : "SIGTERM";
+                         });
 
 TEST(MapOutputs, SecondRunOnTheSameOutRefusesNamingTheFirstsPid) {
     const std::string dir = cliScratchDir("map_outputs", "lock");
@@ -145,7 +149,8 @@ TEST(MapOutputs, KillAtAnyMomentNeverLeavesATruncatedOutput) {
         const double at = moment(rng);
         SCOPED_TRACE("kill at " + std::to_string(at) + " of a run");
         const pid_t pid = spawnStairmap(mapArgs(out));
-        std::this_thread::sleep_for(std::chrono::duration_cast<std::chrono::microseconds>(full * at));
+        std::this_thread::sleep_for(
+            std::chrono::duration_cast<std::chrono::microseconds>(full * at));
         ::kill(pid, SIGKILL);
         waitForExit(pid);
         for (const auto& name : mapOutputNames()) EXPECT_EQ(outputProblem(out, name), "") << name;

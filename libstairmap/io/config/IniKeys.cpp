@@ -68,7 +68,8 @@ std::string KeyRecorder::readString(const std::string& section, const std::strin
     return inner_.read_string(section, name, default_str, fail_if_not_found);
 }
 
-void checkIniKeys(const std::vector<IniLine>& lines, const IniKeys& known, const std::string& source) {
+void checkIniKeys(const std::vector<IniLine>& lines, const IniKeys& known,
+                  const std::string& source) {
     std::set<std::string> sections;
     for (const auto& [name, keys] : known) sections.insert(name);
     for (const IniLine& l : lines) {
@@ -77,7 +78,8 @@ void checkIniKeys(const std::vector<IniLine>& lines, const IniKeys& known, const
         if (section == known.end()) {
             throw std::runtime_error(
                 where + "unknown section [" + l.section + "]" +
-                suggestion(l.section, sections, [](const std::string& s) { return "[" + s + "]"; }) +
+                suggestion(l.section, sections,
+                           [](const std::string& s) { return "[" + s + "]"; }) +
                 "; valid sections: " + joined(sections));
         }
         if (l.key.empty() || section->second.count(l.key) == 1) continue;

@@ -45,7 +45,8 @@ std::string sectionName(const std::string& s, const std::string& source, int lin
     if (close == std::string::npos) malformed(source, line, "section header without ']':", s);
     const std::string name = trim(s.substr(1, close - 1));
     if (!isName(name)) malformed(source, line, "bad section name in", s);
-    if (!isComment(trim(s.substr(close + 1)))) malformed(source, line, "text after the section header:", s);
+    if (!isComment(trim(s.substr(close + 1))))
+        malformed(source, line, "text after the section header:", s);
     return lower(name);
 }
 
@@ -56,7 +57,8 @@ std::string sectionName(const std::string& s, const std::string& source, int lin
     const std::string first = s.substr(0, s.find_first_of(" \t"));
     if (!isName(first)) malformed(source, line, "malformed line", s);
     malformed(source, line,
-              (section.empty() ? "" : "[" + section + "] ") + first + ": no '=' after the key in", s);
+              (section.empty() ? "" : "[" + section + "] ") + first + ": no '=' after the key in",
+              s);
 }
 
 }  // namespace

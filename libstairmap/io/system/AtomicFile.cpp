@@ -34,7 +34,8 @@ void syncDirectory(const std::string& dir) {
 /// Writes all bytes to a new file `path`; throws naming it.
 void writeAll(const std::string& path, const std::string& bytes) {
     const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd < 0) throw std::runtime_error("cannot create temporary file " + path + ": " + errnoText());
+    if (fd < 0)
+        throw std::runtime_error("cannot create temporary file " + path + ": " + errnoText());
     std::size_t done = 0;
     while (done < bytes.size()) {
         const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
@@ -83,7 +84,8 @@ void renameDurably(const std::string& from, const std::string& to) {
     syncDirectory(directoryOf(to));
 }
 
-void writeFileAtomic(const std::string& path, const std::function<void(const std::string&)>& write) {
+void writeFileAtomic(const std::string& path,
+                     const std::function<void(const std::string&)>& write) {
     const std::string tmp = uniqueTempPath(path);
     try {
         write(tmp);
@@ -91,7 +93,8 @@ void writeFileAtomic(const std::string& path, const std::function<void(const std
         renameDurably(tmp, path);
     } catch (const std::bad_alloc&) {
         ::unlink(tmp.c_str());
-        throw std::runtime_error(path + ": out of memory while writing it (previous file left unchanged)");
+        throw std::runtime_error(path +
+                                 ": out of memory while writing it (previous file left unchanged)");
     } catch (const std::exception& e) {
         ::unlink(tmp.c_str());
         throw std::runtime_error(path + ": " + e.what() + " (previous file left unchanged)");
@@ -113,7 +116,8 @@ int removeStaleTempFiles(const std::string& dir) {
         const std::string name = it->path().filename().string();
         if (!std::regex_match(name, m, tempNamePattern())) continue;
         const long pid = std::stol(m[1].str());
-        const bool alive = pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+        const bool alive =
+            pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
         if (!alive && ::unlink(it->path().c_str()) == 0) ++removed;
     }
     return removed;

@@ -10,7 +10,7 @@
 namespace stairmap::io {
 
 class AtomicOutputStream {
-public:
+  public:
     /// Creates the temp file for `path`. Throws std::runtime_error naming `path`.
     explicit AtomicOutputStream(std::string path);
     ~AtomicOutputStream();
@@ -23,7 +23,7 @@ public:
     void commit();
     const std::string& path() const { return path_; }
 
-private:
+  private:
     std::string path_, tmp_;
     std::ofstream out_;
     bool committed_ = false;

@@ -31,7 +31,8 @@ std::string holderPid(int fd) {
 }
 
 bool sameFile(int fd, const std::string& path) {
-    struct stat by_fd {}, by_path {};
+    struct stat by_fd {
+    }, by_path{};
     return ::fstat(fd, &by_fd) == 0 && ::stat(path.c_str(), &by_path) == 0 &&
            by_fd.st_dev == by_path.st_dev && by_fd.st_ino == by_path.st_ino;
 }
@@ -43,12 +44,14 @@ DirectoryLock::DirectoryLock(const std::string& dir)
     for (int attempt = 0; attempt < 100; ++attempt) {
         if (tryLock(dir)) return;
     }
-    throw std::runtime_error(path_ + ": cannot take the output folder's lock (it keeps being replaced)");
+    throw std::runtime_error(path_ +
+                             ": cannot take the output folder's lock (it keeps being replaced)");
 }
 
 bool DirectoryLock::tryLock(const std::string& dir) {
     const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0) throw std::runtime_error(path_ + ": cannot create the lock file: " + std::strerror(errno));
+    if (fd < 0)
+        throw std::runtime_error(path_ + ": cannot create the lock file: " + std::strerror(errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
         const int error = errno;
         const std::string pid = error == EWOULDBLOCK ? holderPid(fd) : "";

@@ -10,7 +10,7 @@
 namespace stairmap::io {
 
 class DirectoryLock {
-public:
+  public:
     /// Locks `dir` (which must exist). Throws std::runtime_error "<dir>: ... (pid N) ..." naming
     /// the process that holds it, or naming the lock file if it cannot be created.
     explicit DirectoryLock(const std::string& dir);
@@ -21,7 +21,7 @@ public:
     const std::string& path() const { return path_; }
     static constexpr const char* kFileName = ".stairmap.lock";
 
-private:
+  private:
     bool tryLock(const std::string& dir);
     std::string path_;
     int fd_ = -1;

@@ -6,7 +6,8 @@ namespace stairmap::io {
 namespace {
 
 volatile std::sig_atomic_t g_received = 0;
-struct sigaction g_previous_int {}, g_previous_term {};
+struct sigaction g_previous_int {
+}, g_previous_term{};
 
 extern "C" void recordSignal(int signal) { g_received = signal; }
 

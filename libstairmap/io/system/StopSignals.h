@@ -7,7 +7,7 @@
 namespace stairmap::io {
 
 class StopSignals {
-public:
+  public:
     StopSignals();
     ~StopSignals();
     StopSignals(const StopSignals&) = delete;

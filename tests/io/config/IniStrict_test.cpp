@@ -1,7 +1,6 @@
 // Strict INI checking: malformed lines and unknown sections/keys are errors naming file, line and
 // key (MRPT's CConfigFile would ignore them); every shipped INI file still loads.
 #include <gtest/gtest.h>
-
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <filesystem>
@@ -40,7 +39,8 @@ std::string configError(const std::string& text) {
 
 void expectContains(const std::string& text, std::initializer_list<std::string> needles) {
     EXPECT_FALSE(text.empty()) << "no error";
-    for (const auto& n : needles) EXPECT_NE(text.find(n), std::string::npos) << n << " in: " << text;
+    for (const auto& n : needles)
+        EXPECT_NE(text.find(n), std::string::npos) << n << " in: " << text;
 }
 
 TEST(IniStrict, EveryShippedConfigAndSceneLoads) {
@@ -63,8 +63,9 @@ TEST(IniStrict, EveryShippedConfigAndSceneLoads) {
 
 TEST(IniStrict, MisspelledSectionNamesFileLineAndTheValidSections) {
     const std::string path = writeIni("config.ini", "");
-    expectContains(configError("# comment\n[detectr]\nleaf_size_m = 0.02\n"),
-                   {path + ":2:", "[detectr]", "did you mean [detector]", "landmarks", "scheduling"});
+    expectContains(
+        configError("# comment\n[detectr]\nleaf_size_m = 0.02\n"),
+        {path + ":2:", "[detectr]", "did you mean [detector]", "landmarks", "scheduling"});
 }
 
 TEST(IniStrict, UnknownKeyNamesFileLineKeyAndListsTheValidKeys) {
@@ -84,7 +85,8 @@ TEST(IniStrict, MalformedLinesNameFileLineAndKey) {
     expectContains(configError("[detector]\n\nleaf_size_m 0.02\n"),
                    {path + ":3:", "[detector] leaf_size_m", "no '='"});
     expectContains(configError("[detector\nleaf_size_m = 0.02\n"), {path + ":1:", "'[detector'"});
-    expectContains(configError("leaf_size_m = 0.02\n[detector]\n"), {path + ":1:", "before any [section]"});
+    expectContains(configError("leaf_size_m = 0.02\n[detector]\n"),
+                   {path + ":1:", "before any [section]"});
     expectContains(configError("[detector]\nleaf size m = 0.02\n"), {path + ":2:", "leaf size m"});
     expectContains(configError("[detector] trailing\n"), {path + ":1:"});
 }
@@ -92,9 +94,12 @@ TEST(IniStrict, MalformedLinesNameFileLineAndKey) {
 TEST(IniStrict, WhatMrptAcceptsStaysAccepted) {
     // Comments of all three kinds, trailing // comments, blanks, case, @define and ${...}.
     EXPECT_EQ(configError("; c\n# c\n// c\n@define R 0.1\n[ Map ]  # c\n"
-                          "  RESOLUTION_M = ${R} // trailing\n[detector] ; c\n"), "");
-    EXPECT_DOUBLE_EQ(loadMapperParams(writeIni("define.ini", "@define R 0.1\n[map]\nresolution_m = ${R}\n"))
-                         .map.resolution_m, 0.1);
+                          "  RESOLUTION_M = ${R} // trailing\n[detector] ; c\n"),
+              "");
+    EXPECT_DOUBLE_EQ(
+        loadMapperParams(writeIni("define.ini", "@define R 0.1\n[map]\nresolution_m = ${R}\n"))
+            .map.resolution_m,
+        0.1);
 }
 
 TEST(IniStrict, TheKeyTableIsWhatTheLoadersRead) {
@@ -106,7 +111,8 @@ TEST(IniStrict, TheKeyTableIsWhatTheLoadersRead) {
         for (const auto& key : names) {
             if (key == "label_filter") continue;  // free text: any value is valid
             const std::string error = configError("[" + section + "]\n" + key + " = not_a_value\n");
-            EXPECT_NE(error.find(key), std::string::npos) << "[" << section << "] " << key << ": " << error;
+            EXPECT_NE(error.find(key), std::string::npos)
+                << "[" << section << "] " << key << ": " << error;
         }
     }
 }
@@ -127,7 +133,8 @@ TEST(IniStrict, SceneKeysDependOnTheSceneType) {
     expectContains(sceneError(head + "[stair]\nrise_m = 0.17\nrun = 0.3\n"),
                    {path + ":7:", "[stair] run", "did you mean run_m", "rise_m", "width_m"});
     // [spiral] is not read by an ascending scene.
-    expectContains(sceneError(head + "[spiral]\nrise_m = 0.17\n"), {path + ":5:", "[spiral]", "stair"});
+    expectContains(sceneError(head + "[spiral]\nrise_m = 0.17\n"),
+                   {path + ":5:", "[spiral]", "stair"});
     expectContains(sceneError(head + "[stair]\nrise_m 0.17\n"), {path + ":6:", "[stair] rise_m"});
 }
 

@@ -1,7 +1,8 @@
 // Atomic output files: unique temp names per process and call, nothing left behind on errors,
 // concurrent writers of one target never share a temp file.
-#include <gtest/gtest.h>
+#include "io/system/AtomicFile.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,7 +12,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/system/AtomicFile.h"
 #include "io/system/AtomicOutputStream.h"
 
 namespace stairmap::io {
@@ -20,7 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string scratch(const std::string& name) {
-    const fs::path dir = fs::path(STAIRMAP_TEST_TMP) / "io_system" / (name + "." + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::path(STAIRMAP_TEST_TMP) / "io_system" / (name + "." + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir.string();
@@ -34,7 +35,8 @@ std::string readAll(const std::string& path) {
 }
 
 std::size_t fileCount(const std::string& dir) {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+    return static_cast<std::size_t>(
+        std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
 }
 
 TEST(AtomicFile, TempNamesAreUniqueBesideTheTargetAndKeepTheExtension) {
@@ -45,7 +47,8 @@ TEST(AtomicFile, TempNamesAreUniqueBesideTheTargetAndKeepTheExtension) {
     EXPECT_EQ(fs::path(a).extension(), ".png");
     EXPECT_NE(a.find(std::to_string(::getpid())), std::string::npos) << a;
     EXPECT_TRUE(isTempFileName(fs::path(a).filename().string()));
-    for (const char* name : {"overview.png", "landmarks.json.tmp", ".stairmap.lock", "a.tmp-x-1.json"})
+    for (const char* name :
+         {"overview.png", "landmarks.json.tmp", ".stairmap.lock", "a.tmp-x-1.json"})
         EXPECT_FALSE(isTempFileName(name)) << name;
 }
 
@@ -62,10 +65,11 @@ TEST(AtomicFile, AFailingWriterLeavesThePreviousFileAndNoTempFile) {
     } catch (const std::runtime_error& e) {
         EXPECT_EQ(std::string(e.what()).rfind(path + ": disk on fire", 0), 0u) << e.what();
     }
-    EXPECT_THROW(writeFileAtomic(path, [](const std::string& tmp) {
-                     std::ofstream(tmp) << "half of b";
-                     throw std::bad_alloc();
-                 }),
+    EXPECT_THROW(writeFileAtomic(path,
+                                 [](const std::string& tmp) {
+                                     std::ofstream(tmp) << "half of b";
+                                     throw std::bad_alloc();
+                                 }),
                  std::runtime_error);
     EXPECT_EQ(readAll(path), "complete previous file");
     EXPECT_EQ(fileCount(dir), 1u);

@@ -1,6 +1,7 @@
 // One run per output folder: the lock names its holder's pid and goes away with it.
-#include <gtest/gtest.h>
+#include "io/system/DirectoryLock.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,15 +10,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/system/DirectoryLock.h"
-
 namespace stairmap::io {
 namespace {
 
 namespace fs = std::filesystem;
 
 std::string scratch(const std::string& name) {
-    const fs::path dir = fs::path(STAIRMAP_TEST_TMP) / "io_system" / (name + "." + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::path(STAIRMAP_TEST_TMP) / "io_system" / (name + "." + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir.string();
@@ -35,8 +35,9 @@ TEST(DirectoryLock, ASecondHolderIsRefusedNamingTheFirstsPid) {
                 DirectoryLock second(dir);
             } catch (const std::runtime_error& e) {
                 const std::string what = e.what();
-                const bool named = what.find("pid " + std::to_string(::getppid())) != std::string::npos &&
-                                   what.find(dir) != std::string::npos;
+                const bool named =
+                    what.find("pid " + std::to_string(::getppid())) != std::string::npos &&
+                    what.find(dir) != std::string::npos;
                 ::_exit(named ? 0 : 2);
             }
             ::_exit(1);
@@ -61,7 +62,8 @@ TEST(DirectoryLock, AMissingFolderNamesTheLockFile) {
         DirectoryLock lock("/nonexistent/out");
         FAIL() << "no error";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("/nonexistent/out/.stairmap.lock"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/out/.stairmap.lock"), std::string::npos)
+            << e.what();
     }
 }
 

@@ -1,12 +1,11 @@
 // SIGINT/SIGTERM as a stop request: the first is recorded, a second ends the process.
-#include <gtest/gtest.h>
+#include "io/system/StopSignals.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <csignal>
-
-#include "io/system/StopSignals.h"
 
 namespace stairmap::io {
 namespace {
