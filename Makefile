@@ -38,11 +38,14 @@ configure: deps $(BUILD_DIR)/CMakeCache.txt
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The main job: replay the bundled two-floor building sequence into a staircase landmark map.
+# The main job: replay the bundled two-floor building sequence into a staircase landmark map, then
+# export it for planners (floor graph, floor maps, Spot staircases) for the three robot presets.
 demo: build
 	$(STAIRMAP) map datasets/two_floor/two_floor.rawlog --poses datasets/two_floor/poses.tum \
 	  --config config/sim_legged_vlp16.ini --out $(DEMO_OUT)/two_floor
 	@echo "stairmap: demo outputs in $(DEMO_OUT)/two_floor (landmarks.json, map.bt, scene.3Dscene, overview.png, ...)"
+	$(STAIRMAP) export $(DEMO_OUT)/two_floor --robot config/robots/tracked.ini \
+	  --robot config/robots/quadruped.ini --robot config/robots/scout.ini --out $(DEMO_OUT)/two_floor/export
 	$(STAIRMAP) detect datasets/clouds/ascending_0.pcd.gz --robot-height 0.35
 
 test: build

@@ -22,5 +22,6 @@ Command addDetectCommand(CLI::App& app);
 Command addSimCommand(CLI::App& app);
 Command addEvalCommand(CLI::App& app);
 Command addMapCommand(CLI::App& app);
+Command addExportCommand(CLI::App& app);
 
 }  // namespace stairmap::apps

@@ -1,4 +1,4 @@
-// stairmap: one executable, one subcommand per job (detect, sim, eval, map).
+// stairmap: one executable, one subcommand per job (detect, sim, eval, map, export).
 
 #include <exception>
 #include <new>
@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
         "Run `stairmap <command> --help` for the options of each command."};
     app.require_subcommand(1);
     std::vector<Command> commands = {addDetectCommand(app), addSimCommand(app),
-                                     addEvalCommand(app), addMapCommand(app)};
+                                     addEvalCommand(app), addMapCommand(app),
+                                     addExportCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

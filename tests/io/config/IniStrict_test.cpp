@@ -1,5 +1,6 @@
 // Strict INI checking: malformed lines and unknown sections/keys are errors naming file, line and
-// key (MRPT's CConfigFile would ignore them); every shipped INI file still loads.
+// key (MRPT's CConfigFile would ignore them); every shipped INI file (configs, robot profiles,
+// scenes) still loads.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -11,6 +12,7 @@
 #include "io/config/IniKeys.h"
 #include "io/config/IniSyntax.h"
 #include "io/config/MapperConfig.h"
+#include "io/config/RobotProfileConfig.h"
 #include "io/config/SceneIni.h"
 
 namespace stairmap::io {
@@ -57,7 +59,12 @@ TEST(IniStrict, EveryShippedConfigAndSceneLoads) {
         EXPECT_NO_THROW(loadSimulationConfig(e.path().string()));
         ++scenes;
     }
-    EXPECT_GE(configs, 5);
+    for (const auto& e : fs::directory_iterator(fs::path(STAIRMAP_SOURCE_DIR) / "config/robots")) {
+        SCOPED_TRACE(e.path().string());
+        EXPECT_NO_THROW(loadRobotProfile(e.path().string()));
+        ++configs;
+    }
+    EXPECT_GE(configs, 8);
     EXPECT_GE(scenes, 20);
 }
 
