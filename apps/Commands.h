@@ -22,6 +22,7 @@ Command addDetectCommand(CLI::App& app);
 Command addSimCommand(CLI::App& app);
 Command addEvalCommand(CLI::App& app);
 Command addMapCommand(CLI::App& app);
+Command addMergeCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 
 }  // namespace stairmap::apps

@@ -1,4 +1,4 @@
-// stairmap: one executable, one subcommand per job (detect, sim, eval, map, export).
+// stairmap: one executable, one subcommand per job (detect, sim, eval, map, merge, export).
 
 #include <exception>
 #include <new>
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     std::vector<Command> commands = {addDetectCommand(app), addSimCommand(app),
                                      addEvalCommand(app), addMapCommand(app),
-                                     addExportCommand(app)};
+                                     addMergeCommand(app), addExportCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
