@@ -13,7 +13,7 @@
 #include "core/StairDetector.h"
 #include "io/cloud/CloudFile.h"
 #include "io/config/DetectorConfig.h"
-#include "io/config/IniFile.h"
+#include "io/config/ConfigFile.h"
 #include "io/json/StaircaseJson.h"
 
 namespace stairmap::apps {
@@ -53,12 +53,7 @@ struct DetectOptions {
 
 io::DetectorConfig loadConfig(const std::string& config_path) {
     if (config_path.empty()) return {};  // built-in defaults
-    const auto cfg = io::openIniFile(config_path);
-    try {
-        return io::loadDetectorConfig(*cfg, "detector");
-    } catch (const std::exception& e) {
-        throw std::runtime_error(config_path + ": " + e.what());
-    }
+    return io::loadDetectorConfigFile(config_path);
 }
 
 /// --robot-height wins over the config; no height at all means "estimate the floor".
@@ -116,7 +111,10 @@ Command addDetectCommand(CLI::App& app) {
                             "[m] height of the robot frame origin above the floor it stands on (floor z = -H)");
     command.cli->add_option("--config", options->config_path,
                             "MRPT-style INI file; its [detector] section overrides the built-in defaults");
-    command.run = [options]() -> int { return runDetect(*options); };
+    command.run = [options, input = command.input]() -> int {
+        *input = options->cloud_path;
+        return runDetect(*options);
+    };
     return command;
 }
 

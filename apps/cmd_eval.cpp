@@ -17,7 +17,7 @@
 #include "io/eval/EvalInputs.h"
 #include "io/eval/EvalJson.h"
 #include "io/json/GroundTruthJson.h"
-#include "io/config/IniFile.h"
+#include "io/config/ConfigFile.h"
 
 namespace stairmap::apps {
 
@@ -50,12 +50,7 @@ struct EvalOptions {
 
 DetectorParams detectorParams(const std::string& config_path) {
     if (config_path.empty()) return {};
-    const auto cfg = io::openIniFile(config_path);
-    try {
-        return io::loadDetectorConfig(*cfg, "detector").params;
-    } catch (const std::exception& e) {
-        throw std::runtime_error(config_path + ": " + e.what());
-    }
+    return io::loadDetectorConfigFile(config_path).params;
 }
 
 std::vector<EvaluationSample> detectSamples(const EvalOptions& options) {
@@ -132,7 +127,10 @@ Command addEvalCommand(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     command.cli->add_option("--max-z", options->params.max_z_m, "[m] matching: median z distance")
         ->check(CLI::PositiveNumber);
-    command.run = [options]() { return runEval(*options); };
+    command.run = [options, input = command.input]() {
+        for (const auto& path : options->inputs) *input += (input->empty() ? "" : ", ") + path;
+        return runEval(*options);
+    };
     return command;
 }
 

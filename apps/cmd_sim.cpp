@@ -118,7 +118,10 @@ Command addSimCommand(CLI::App& app) {
     command.cli->add_option("--gzip-level", options->gzip_level, "Rawlog gzip level")
         ->check(CLI::Range(1, 9));
     command.cli->add_flag("--quiet,-q", options->quiet, "No progress on stderr");
-    command.run = [options]() { return runSim(*options); };
+    command.run = [options, input = command.input]() -> int {
+        *input = options->scene_path;
+        return runSim(*options);
+    };
     return command;
 }
 

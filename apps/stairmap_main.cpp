@@ -2,11 +2,32 @@
 // annotate).
 
 #include <exception>
+#include <new>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "Commands.h"
+
+namespace {
+
+/// Runs the chosen command; every exception becomes one line on stderr and exit status 2.
+int runCommand(const stairmap::apps::Command& command) {
+    const std::string prefix = "stairmap " + command.cli->get_name() + ": error: ";
+    const auto input = [&] { return command.input->empty() ? std::string("stairmap") : *command.input; };
+    try {
+        return command.run();
+    } catch (const std::bad_alloc&) {
+        std::cerr << prefix << input() << ": out of memory while processing this input\n";
+    } catch (const std::exception& e) {
+        std::cerr << prefix << e.what() << "\n";
+    } catch (...) {
+        std::cerr << prefix << input() << ": unexpected error while processing this input\n";
+    }
+    return 2;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace stairmap::apps;
@@ -29,13 +50,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     for (const Command& command : commands) {
-        if (!command.cli->parsed()) continue;
-        try {
-            return command.run();
-        } catch (const std::exception& e) {
-            std::cerr << "stairmap " << command.cli->get_name() << ": error: " << e.what() << "\n";
-            return 2;
-        }
+        if (command.cli->parsed()) return runCommand(command);
     }
     return 2;
 }

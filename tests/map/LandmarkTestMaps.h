@@ -3,6 +3,7 @@
 // floor samples) and a scratch folder, shared by the persistence tests.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -70,8 +71,11 @@ inline LandmarkMap buildTestMap() {
     return map;
 }
 
+/// A fresh folder for one test. The pid keeps tests that ctest runs in parallel processes apart
+/// (two of them sharing "schema" removed each other's files).
 inline std::string scratchDir(const std::string& name) {
-    const std::string dir = std::string(STAIRMAP_TEST_TMP) + "/landmarks/" + name;
+    const std::string dir =
+        std::string(STAIRMAP_TEST_TMP) + "/landmarks/" + name + "." + std::to_string(::getpid());
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -50,8 +50,10 @@ public:
 
 private:
     std::optional<std::string> raw(const char* key) const {
+        // Read before asking whether the key exists: a KeyRecorder (IniKeys.h) learns the key.
+        std::string text = cfg_.read_string(section_, key, "");
         if (!cfg_.keyExists(section_, key)) return std::nullopt;
-        return trimmed(cfg_.read_string(section_, key, ""));
+        return trimmed(std::move(text));
     }
     double parseNumber(const char* key, const std::string& text) const {
         std::size_t used = 0;

@@ -3,7 +3,7 @@
 // throws std::runtime_error "<file>: [section] key: <problem>" (MRPT's own readers would silently
 // return 0 for text). Missing keys give the caller's default.
 
-#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileBase.h>
 
 #include <Eigen/Core>
 #include <string>
@@ -13,7 +13,7 @@ namespace stairmap::io {
 
 class IniFieldReader {
 public:
-    IniFieldReader(const mrpt::config::CConfigFile& cfg, std::string path)
+    IniFieldReader(const mrpt::config::CConfigFileBase& cfg, std::string path)
         : cfg_(cfg), path_(std::move(path)) {}
 
     bool has(const std::string& section, const std::string& key) const;
@@ -35,7 +35,7 @@ public:
     const std::string& path() const { return path_; }
 
 private:
-    const mrpt::config::CConfigFile& cfg_;
+    const mrpt::config::CConfigFileBase& cfg_;
     std::string path_;
 };
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "io/config/DetectorConfig.h"
-#include "io/config/IniFile.h"
+#include "io/config/ConfigFile.h"
 #include "io/config/LandmarkConfig.h"
 
 namespace stairmap::io {
@@ -20,8 +20,9 @@ public:
         : cfg_(cfg), section_(std::move(section)) {}
 
     std::optional<std::string> text(const char* key) const {
-        if (!cfg_.keyExists(section_, key)) return std::nullopt;
+        // Read before asking whether the key exists: a KeyRecorder (IniKeys.h) learns the key.
         std::string t = cfg_.read_string(section_, key, "");
+        if (!cfg_.keyExists(section_, key)) return std::nullopt;
         const auto not_space = [](unsigned char c) { return !std::isspace(c); };
         t.erase(t.begin(), std::find_if(t.begin(), t.end(), not_space));
         t.erase(std::find_if(t.rbegin(), t.rend(), not_space).base(), t.end());
@@ -125,7 +126,7 @@ pipeline::MapperParams loadMapperParams(const mrpt::config::CConfigFileBase& cfg
 }
 
 pipeline::MapperParams loadMapperParams(const std::string& ini_path) {
-    const auto cfg = openIniFile(ini_path);
+    const auto cfg = openConfigFile(ini_path);
     try {
         return loadMapperParams(*cfg);
     } catch (const std::invalid_argument& e) {

@@ -23,8 +23,8 @@ pipeline::SchedulingParams loadSchedulingParams(const mrpt::config::CConfigFileB
 
 /// Everything the mapper needs: the three sections above plus [detector] and [landmarks].
 pipeline::MapperParams loadMapperParams(const mrpt::config::CConfigFileBase& cfg);
-/// Same from a file path (openIniFile: a missing file throws naming the path); errors are
-/// prefixed with the path.
+/// Same from a file path, opened strictly (ConfigFile.h: a missing file, malformed line or unknown
+/// section/key throws naming the path and line); value errors are prefixed with the path.
 pipeline::MapperParams loadMapperParams(const std::string& ini_path);
 
 }  // namespace stairmap::io

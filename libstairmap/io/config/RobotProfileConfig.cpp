@@ -1,45 +1,17 @@
 #include "io/config/RobotProfileConfig.h"
 
 #include <filesystem>
-#include <set>
 #include <stdexcept>
 
 #include "io/config/IniFieldReader.h"
 #include "io/config/IniFile.h"
+#include "io/config/IniKeys.h"
+#include "io/config/IniSyntax.h"
 
 namespace stairmap::io {
 namespace {
 
 constexpr const char* kSection = "robot";
-
-const std::set<std::string>& knownKeys() {
-    static const std::set<std::string> keys = {"name",
-                                               "max_rise_m",
-                                               "min_run_m",
-                                               "min_width_m",
-                                               "max_slope_deg",
-                                               "max_steps_without_landing",
-                                               "can_ascend",
-                                               "can_descend",
-                                               "footprint_length_m",
-                                               "footprint_width_m",
-                                               "clearance_m",
-                                               "height_m"};
-    return keys;
-}
-
-void checkSectionAndKeys(const mrpt::config::CConfigFile& cfg, const IniFieldReader& r) {
-    std::vector<std::string> sections;
-    cfg.getAllSections(sections);
-    bool found = false;
-    for (const auto& s : sections) found = found || s == kSection;
-    if (!found) throw std::runtime_error(r.path() + ": no [robot] section");
-    std::vector<std::string> keys;
-    cfg.getAllKeys(kSection, keys);
-    for (const auto& k : keys) {
-        if (!knownKeys().count(k)) r.fail(kSection, k, "unknown key");
-    }
-}
 
 exporting::RobotProfile readFields(const IniFieldReader& r, const std::string& stem) {
     exporting::RobotProfile p;
@@ -63,9 +35,12 @@ exporting::RobotProfile readFields(const IniFieldReader& r, const std::string& s
 
 exporting::RobotProfile loadRobotProfile(const std::string& path) {
     const auto cfg = openIniFile(path);
-    const IniFieldReader reader(*cfg, path);
-    checkSectionAndKeys(*cfg, reader);
+    const std::vector<IniLine> lines = lexIniFile(path);  // malformed lines fail first
+    if (!cfg->sectionExists(kSection)) throw std::runtime_error(path + ": no [robot] section");
+    const KeyRecorder recorder(*cfg);  // learns the valid keys from readFields itself
+    const IniFieldReader reader(recorder, path);
     exporting::RobotProfile p = readFields(reader, std::filesystem::path(path).stem().string());
+    checkIniKeys(lines, recorder.keys(), path);
     try {
         exporting::validateRobotProfile(p);
     } catch (const std::invalid_argument& e) {

@@ -3,6 +3,8 @@
 #include <sstream>
 
 #include "io/config/IniFile.h"
+#include "io/config/IniKeys.h"
+#include "io/config/IniSyntax.h"
 #include "io/config/SceneIniParts.h"
 #include "sim/BuildingGenerator.h"
 #include "sim/NegativeGenerators.h"
@@ -141,7 +143,9 @@ void buildScene(const IniFieldReader& ini, const std::string& type, sim::Simulat
 
 sim::SimulationConfig loadSimulationConfig(const std::string& path) {
     const auto cfg = openIniFile(path);
-    const IniFieldReader ini(*cfg, path);
+    const std::vector<IniLine> lines = lexIniFile(path);  // malformed lines fail before anything
+    const KeyRecorder recorder(*cfg);
+    const IniFieldReader ini(recorder, path);
     sim::SimulationConfig config;
     const std::string type = ini.getString("scene", "type", "");
     if (type.empty()) ini.fail("scene", "type", "missing (the generator to use)");
@@ -157,6 +161,8 @@ sim::SimulationConfig loadSimulationConfig(const std::string& path) {
     detail::loadCloudSection(ini, config);
     if (config.robots.empty() && config.cloud_poses.empty())
         ini.fail("trajectory", "waypoints", "the scene has neither a trajectory nor [clouds] poses");
+    // Sections and keys depend on the scene type: valid are those this scene's loaders read.
+    checkIniKeys(lines, recorder.keys(), path);
     return config;
 }
 

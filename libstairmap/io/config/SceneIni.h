@@ -8,7 +8,9 @@
 
 namespace stairmap::io {
 
-/// Loads and builds the scene. Throws std::runtime_error "<file>: [section] key: problem".
+/// Loads and builds the scene. Throws std::runtime_error "<file>: [section] key: problem"; a
+/// malformed line, or a section or key that the scene's type does not read, throws
+/// "<file>:<line>: ..." listing the valid sections or keys (IniKeys.h).
 sim::SimulationConfig loadSimulationConfig(const std::string& path);
 
 }  // namespace stairmap::io

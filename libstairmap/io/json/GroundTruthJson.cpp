@@ -1,5 +1,7 @@
 #include "io/json/GroundTruthJson.h"
 
+#include "io/system/InputFile.h"
+
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -92,10 +94,12 @@ json groundTruthToJson(const SceneTruth& truth) {
     return j;
 }
 
-SceneTruth groundTruthFromJson(const json& j, const std::string& source) {
-    if (!j.is_object() || j.value("format", "") != "stairmap-gt")
+namespace {
+SceneTruth parseGroundTruth(const json& j, const std::string& source) {
+    if (!j.is_object() || !j.contains("format") || j["format"] != "stairmap-gt")
         fail(source, "not a stairmap ground-truth file (\"format\": \"stairmap-gt\" missing)");
     SceneTruth truth;
+    if (j.contains("frame") && !j["frame"].is_string()) fail(source, "frame: must be a string");
     truth.frame = j.value("frame", "world");
     const json& floors = member(j, "floor_heights", source, "root");
     if (!floors.is_array()) fail(source, "floor_heights: must be an array");
@@ -110,6 +114,15 @@ SceneTruth groundTruthFromJson(const json& j, const std::string& source) {
         truth.staircases.push_back(staircaseFromJson(stairs[i], source, "staircases[" + std::to_string(i) + "]"));
     return truth;
 }
+}  // namespace
+
+SceneTruth groundTruthFromJson(const json& j, const std::string& source) {
+    try {
+        return parseGroundTruth(j, source);
+    } catch (const json::exception& e) {  // a value of the wrong type that no check above caught
+        fail(source, std::string("wrong type of value: ") + e.what());
+    }
+}
 
 void writeGroundTruthFile(const std::string& path, const SceneTruth& truth, const json& extra) {
     json j = groundTruthToJson(truth);
@@ -121,8 +134,7 @@ void writeGroundTruthFile(const std::string& path, const SceneTruth& truth, cons
 }
 
 SceneTruth readGroundTruthFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot open ground-truth file");
+    std::ifstream in = openInputFile(path, "a ground-truth (gt.json) file");
     json j;
     try {
         in >> j;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/system/AtomicFile.h"
+#include "io/system/InputFile.h"
 #include "io/json/LandmarkJson.h"
 
 namespace stairmap::io {
@@ -41,8 +42,7 @@ void saveLandmarkStateAtomic(const std::string& path, const LandmarkMapState& st
 }
 
 LandmarkMapState loadLandmarkState(const std::string& path, LandmarkParams* params_out) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
+    std::ifstream in = openInputFile(path, "a landmarks.json file");
     return readLandmarkState(in, path, params_out);
 }
 

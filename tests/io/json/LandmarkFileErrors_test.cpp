@@ -118,12 +118,10 @@ TEST(LandmarkFile, FailedSaveLeavesThePreviousMapAndNoTempFile) {
     small.addDetection(test::makeDetection(test::FlightTruth{}, test::ViewSpec{}, rng), 0.0);
     io::saveLandmarkMapAtomic(path, small);
     const std::string before = test::readFile(path);
-    // Occupy the temp file name with a directory: the temp file cannot be created.
-    const std::string tmp = path + ".tmp";
-    std::filesystem::create_directory(tmp);
-    EXPECT_THROW(io::saveLandmarkMapAtomic(path, test::buildTestMap()), std::runtime_error);
+    // A folder that does not exist: the temp file cannot be created.
+    EXPECT_THROW(io::saveLandmarkMapAtomic(dir + "/missing/landmarks.json", test::buildTestMap()),
+                 std::runtime_error);
     EXPECT_EQ(test::readFile(path), before);
-    std::filesystem::remove(tmp);
     // Renaming onto a directory fails after the temp file was written: it is cleaned up.
     const std::string dir_target = dir + "/a_directory";
     std::filesystem::create_directory(dir_target);
@@ -155,8 +153,9 @@ TEST(LandmarkFile, KillDuringRepeatedSavesAlwaysLeavesALoadableMap) {
         const LandmarkMap loaded = io::loadLandmarkMap(path);  // throws on a partial file
         EXPECT_EQ(loaded.staircases().size(), map.staircases().size());
     }
-    io::saveLandmarkMapAtomic(path, map);  // a temp file left by a kill does not get in the way
-    EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+    // Temp files left by the kills (unique names, io/system/AtomicFile.h) do not get in the way.
+    io::saveLandmarkMapAtomic(path, map);
+    EXPECT_EQ(io::loadLandmarkMap(path).staircases().size(), map.staircases().size());
 }
 
 }  // namespace
