@@ -42,7 +42,9 @@ TEST(StairGenerators, StraightFlightTreadsAndNosings) {
         EXPECT_NEAR((n.end - n.start).norm(), 1.0, 1e-9);
         // Just behind each nosing the tread top is at the nosing height; just before it, one rise lower.
         EXPECT_NEAR(dropHeight(scene, 1.0, n.centre().y() + 0.05), n.centre().z(), 1e-9) << "tread " << i;
-        if (i > 1) EXPECT_NEAR(dropHeight(scene, 1.0, n.centre().y() - 0.05), n.centre().z() - 0.2, 1e-9);
+        if (i > 1) {
+            EXPECT_NEAR(dropHeight(scene, 1.0, n.centre().y() - 0.05), n.centre().z() - 0.2, 1e-9);
+        }
     }
 }
 
