@@ -19,6 +19,11 @@ struct SensorParams {
     std::string label_filter;  ///< only scans with this sensor label are used (empty: all)
     double min_range_m = 0.3;  ///< [m] points closer to the robot origin are dropped (self hits)
     double max_range_m = 30.0; ///< [m] points farther from the robot origin are dropped
+    /// Pose of the sensor on the robot, for live sources whose messages carry none (ROS 2
+    /// PointCloud2 without TF, MRPT drivers configured elsewhere). Rawlog observations carry their
+    /// own sensor pose and ignore these. [m] translation, [deg] yaw-pitch-roll (MRPT's order).
+    double pose_x_m = 0.0, pose_y_m = 0.0, pose_z_m = 0.0;
+    double pose_yaw_deg = 0.0, pose_pitch_deg = 0.0, pose_roll_deg = 0.0;
 };
 
 /// [scheduling]: when the detector runs and on what cloud.

@@ -84,6 +84,12 @@ pipeline::SensorParams loadSensorParams(const mrpt::config::CConfigFileBase& cfg
     if (p.max_range_m <= p.min_range_m) {
         r.fail("max_range_m", std::to_string(p.max_range_m), "must be greater than min_range_m");
     }
+    r.number("pose_x_m", p.pose_x_m, -100.0, 100.0);
+    r.number("pose_y_m", p.pose_y_m, -100.0, 100.0);
+    r.number("pose_z_m", p.pose_z_m, -100.0, 100.0);
+    r.number("pose_yaw_deg", p.pose_yaw_deg, -360.0, 360.0);
+    r.number("pose_pitch_deg", p.pose_pitch_deg, -360.0, 360.0);
+    r.number("pose_roll_deg", p.pose_roll_deg, -360.0, 360.0);
     return p;
 }
 

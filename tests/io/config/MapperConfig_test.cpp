@@ -73,6 +73,20 @@ TEST(MapperConfig, BadValuesNameSectionAndKey) {
     expectErrorNaming("[scheduling]\nwindow_s = nan\n", "[scheduling] window_s");
     expectErrorNaming("[sensor]\nfloor_from_pose = maybe\n", "[sensor] floor_from_pose");
     expectErrorNaming("[sensor]\nmin_range_m = 5\nmax_range_m = 2\n", "max_range_m");
+    expectErrorNaming("[sensor]\npose_yaw_deg = 720\n", "[sensor] pose_yaw_deg");
+    expectErrorNaming("[sensor]\npose_z_m = inf\n", "[sensor] pose_z_m");
+}
+
+TEST(MapperConfig, ReadsTheSensorPoseOnTheRobot) {
+    const pipeline::SensorParams p = loadMapperParams(ini(
+        "[sensor]\npose_x_m = 0.2\npose_y_m = -0.1\npose_z_m = 0.5\n"
+        "pose_yaw_deg = 90\npose_pitch_deg = 10\npose_roll_deg = -5\n")).sensor;
+    EXPECT_DOUBLE_EQ(p.pose_x_m, 0.2);
+    EXPECT_DOUBLE_EQ(p.pose_y_m, -0.1);
+    EXPECT_DOUBLE_EQ(p.pose_z_m, 0.5);
+    EXPECT_DOUBLE_EQ(p.pose_yaw_deg, 90);
+    EXPECT_DOUBLE_EQ(p.pose_pitch_deg, 10);
+    EXPECT_DOUBLE_EQ(p.pose_roll_deg, -5);
 }
 
 class ShippedConfig : public ::testing::TestWithParam<std::string> {};
