@@ -107,6 +107,7 @@ void RawlogFollowSource::run(live::ScanSink& sink, const std::atomic<bool>& stop
     auto stream = std::make_unique<GrowingFileStream>(path_, params_.file, stop);
     const GrowingFileStream& file = *stream;
     RawlogScanSource source(std::move(stream), path_, params_.rawlog, poseLookup(stop));
+    if (params_.on_warning) source.setWarningHandler(params_.on_warning);
     for (;;) {
         std::optional<Scan> scan;
         try {

@@ -9,6 +9,7 @@
 // The run ends when the file has not grown for idle_timeout_s, or at a stop.
 
 #include <atomic>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <string>
@@ -26,6 +27,9 @@ struct RawlogFollowParams {
     std::string poses_path;           ///< growing TUM file; empty: poses from the rawlog
     GrowingTrajectoryParams poses;    ///< how long a scan waits for its pose, etc.
     bool static_robot = false;        ///< identity pose for every scan (excludes poses_path)
+    /// Told each reader warning as it happens (unsupported type, first pose-less scan, ...), on
+    /// the source's thread. Optional.
+    std::function<void(const std::string&)> on_warning;
 };
 
 /// Checks, without waiting, that `path` can be followed: an existing, readable, plain (not gzip)
