@@ -141,6 +141,15 @@ TEST(LiveFollow, SigintMidRunLeavesValidOutputsThatMapInResumes) {
         if (mapped >= 50) break;
     }
     ASSERT_GE(mapped, 50u) << fileText(dir + "/stderr.txt");
+    // SIGUSR1: every output now, the run goes on.
+    EXPECT_FALSE(fs::exists(dir + "/out1/map.bt"));
+    ::kill(live, SIGUSR1);
+    for (auto t0 = std::chrono::steady_clock::now();
+         !fs::exists(dir + "/out1/overview.png") && std::chrono::steady_clock::now() - t0 < 10s;)
+        std::this_thread::sleep_for(50ms);
+    EXPECT_TRUE(fs::exists(dir + "/out1/map.bt"));
+    EXPECT_TRUE(fs::exists(dir + "/out1/overview.png"));
+    EXPECT_EQ(::waitpid(live, nullptr, WNOHANG), 0) << "a snapshot must not end the run";
     ::kill(live, SIGINT);
     ASSERT_EQ(waitForExit(live, 10s), 0) << fileText(dir + "/stderr.txt");
     const json stats = loadJson(dir + "/out1/stats.json");
