@@ -100,24 +100,35 @@ LiveEnd LiveRunner::run() {
     const auto poll = std::chrono::milliseconds(
         static_cast<long>(params_.poll_period_s * 1000.0) > 0
             ? static_cast<long>(params_.poll_period_s * 1000.0) : 1);
+    // Whatever ends the loop (also an exception from the mapper, a listener or the tick, e.g. a
+    // full disk), the source is stopped and joined before run() leaves.
+    const auto stop_source = [&] {
+        stop_ = true;  // the source returns within ~0.2 s; a blocked push gives up
+        queue_.wake();
+        source_thread.join();
+    };
     LiveEnd end = LiveEnd::SourceEnded;
+    try {
+        end = mapUntilEnd(poll);
+    } catch (...) {
+        stop_source();
+        throw;
+    }
+    stop_source();
+    tickIfDue(true);
+    return end;
+}
+
+LiveEnd LiveRunner::mapUntilEnd(std::chrono::milliseconds poll) {
     for (;;) {
-        if (const auto limit = limitReached()) {
-            end = *limit;
-            break;
-        }
+        if (const auto limit = limitReached()) return *limit;
         if (std::optional<QueuedScan> item = queue_.pop(poll)) {
             mapOne(std::move(*item));
         } else if (queue_.drained()) {
-            break;
+            return LiveEnd::SourceEnded;
         }
         tickIfDue(false);
     }
-    stop_ = true;  // the source returns within ~0.2 s; a blocked push gives up
-    queue_.wake();
-    source_thread.join();
-    tickIfDue(true);
-    return end;
 }
 
 LiveStatus LiveRunner::status() const {

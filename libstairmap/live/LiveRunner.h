@@ -76,7 +76,8 @@ public:
     void setStopCheck(std::function<bool()> check);
 
     /// Runs until the source ends and every scan it pushed is mapped, a stop, --duration or
-    /// --max-scans. Queued scans left at a stop are not mapped. Call once.
+    /// --max-scans. Queued scans left at a stop are not mapped. Call once. An exception from the
+    /// mapper, a listener or the tick callback stops and joins the source, then propagates.
     LiveEnd run();
 
     LiveStatus status() const;
@@ -85,6 +86,7 @@ public:
 
 private:
     std::optional<LiveEnd> limitReached() const;
+    LiveEnd mapUntilEnd(std::chrono::milliseconds poll);
     void mapOne(QueuedScan item);
     void tickIfDue(bool force);
     void sourceThread();

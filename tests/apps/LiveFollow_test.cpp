@@ -183,5 +183,29 @@ TEST(LiveFollow, SigintMidRunLeavesValidOutputsThatMapInResumes) {
     }
 }
 
+TEST(LiveFollow, MaxScansAndDurationEndARunEarlyWithEveryOutputWritten) {
+    const std::string dir = cliScratchDir("live_follow", "limits");
+    const std::string log = dir + "/full.rawlog";
+    ASSERT_EQ(waitForExit(spawnWriter(log, 0, 1 << 30, 1 << 30, 1), 30s), 0);
+    const std::string common = "live --follow '" + log + "' --poses '" + kPoses + "' --config '" +
+                               kPreset + "' --quiet --idle-timeout 60 ";
+    const CliResult a = runStairmap(common + "--max-scans 10 --out '" + dir + "/a'", dir);
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    const json sa = loadJson(dir + "/a/stats.json");
+    EXPECT_EQ(sa["live"]["scans_mapped"], 10);
+    EXPECT_EQ(sa["live"]["ended"], "--max-scans reached");
+    // The whole file is read in well under a second; then the follower waits for growth that
+    // never comes (idle timeout 60 s): --duration ends the run.
+    const auto t0 = std::chrono::steady_clock::now();
+    const CliResult b = runStairmap(common + "--duration 3 --out '" + dir + "/b'", dir);
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, 20s);
+    const json sb = loadJson(dir + "/b/stats.json");
+    EXPECT_EQ(sb["live"]["ended"], "--duration reached");
+    EXPECT_GT(sb["live"]["scans_mapped"].get<std::size_t>(), 0u);
+    for (const char* f : {"landmarks.json", "map.bt", "scene.3Dscene", "overview.png"})
+        EXPECT_TRUE(fs::exists(dir + "/b/" + f)) << f;
+}
+
 }  // namespace
 }  // namespace stairmap::test

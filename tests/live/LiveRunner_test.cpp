@@ -166,5 +166,23 @@ TEST(LiveRunner, TickRunsPeriodicallyAndOnceAtTheEnd) {
     EXPECT_EQ(ticks.back().source_counters.at("pushed"), source.pushed_.load());
 }
 
+struct ThrowingListener : LandmarkListener {
+    void onLandmarks(const LandmarkMap&, double stamp_s) override {
+        if (stamp_s > 0) throw std::runtime_error("landmarks.json: No space left on device");
+    }
+};
+
+TEST(LiveRunner, AFailingListenerStopsTheSourceAndPropagatesInsteadOfTerminating) {
+    FakeSource source(stairDrive(30), false, /*endless=*/true);
+    pipeline::Mapper mapper{pipeline::MapperParams{}};
+    LiveRunner runner(mapper, source, {});
+    ThrowingListener listener;
+    runner.addListener(listener);
+    EXPECT_THROW(runner.run(), std::runtime_error);  // the source thread was joined: no terminate
+    const std::size_t pushed = source.pushed_.load();
+    std::this_thread::sleep_for(50ms);
+    EXPECT_EQ(source.pushed_.load(), pushed) << "the source must have stopped";
+}
+
 }  // namespace
 }  // namespace stairmap::live
