@@ -52,10 +52,11 @@ struct DetectorParams {
     double max_step_height_m = 0.30;  ///< [m] condition 1, maximum rise
     double min_step_depth_m = 0.15;   ///< [m] condition 2, minimum run
     double max_step_depth_m = 0.45;   ///< [m] condition 2, maximum run
-    /// [deg] condition 3, minimum slope atan(h/d). The paper uses 25; shallow outdoor and entrance
-    /// flights (rise 0.10 m on a 0.40 m run: 14 deg) are real stairs, so 12 (0.10 / 0.45) is the
-    /// default. Ramps give no nosings and stay out by "no line in between".
-    double min_slope_deg = 12.0;
+    /// [deg] condition 3, minimum slope atan(h/d). The paper uses 25; shallow entrance flights
+    /// (0.11 m rises on 0.30 m runs: 20 deg) are real stairs, so 20 is the default. Lower is not
+    /// safe: a LiDAR's rings on a steep ramp are evenly spaced level lines whose slope is the
+    /// ramp's (datasets/clouds/ramp_steep_0 becomes two staircases at 12 deg).
+    double min_slope_deg = 20.0;
     double max_slope_deg = 60.0;      ///< [deg] condition 3, maximum slope
     /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; a spiral's
     /// wedge treads turn run / mid radius per step: 15-25 deg on wide spirals, up to 40 deg and more
