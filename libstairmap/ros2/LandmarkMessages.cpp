@@ -1,6 +1,9 @@
 #include "ros2/LandmarkMessages.h"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
+#include <stdexcept>
 
 #include "ros2/DdsSupport.h"
 #include "ros2/MessageBuilders.h"
@@ -119,6 +122,86 @@ StaircaseArrayMessage::StaircaseArrayMessage(const std::vector<StaircaseLandmark
     for (const Floor& f : floors) floors_.push_back({f.id, f.z, f.support()});
     pointSequenceAt(msg_.staircases, staircases_);
     pointSequenceAt(msg_.floors, floors_);
+}
+
+namespace {
+
+Eigen::Vector3d vector(const geometry_msgs_msg_dds__Point_& p) { return {p.x, p.y, p.z}; }
+
+StaircaseLandmark landmarkOf(const stairmap_msgs_msg_dds__Staircase_& s) {
+    const std::string name = "staircase " + std::to_string(s.id);
+    StaircaseLandmark l;
+    l.id = s.id;
+    l.confirmed = s.confirmed;
+    l.observations = s.observations;
+    l.first_seen_s = toSeconds(s.first_seen.sec, s.first_seen.nanosec);
+    l.last_seen_s = toSeconds(s.last_seen.sec, s.last_seen.nanosec);
+    l.bottom_floor = s.bottom_floor_id;
+    l.top_floor = s.top_floor_id;
+    l.bottom_observed = s.bottom_observed;
+    l.top_observed = s.top_observed;
+    Staircase& st = l.stairs;
+    st.direction = StairDirection::Ascending;
+    st.location = vector(s.location);
+    st.heading_rad = s.heading;
+    st.slope_rad = s.slope;
+    st.step_height = s.rise;
+    st.step_depth = s.run;
+    st.step_width = s.width;
+    for (uint32_t k = 0; k < s.steps._length && s.steps._buffer != nullptr; ++k) {
+        const auto& m = s.steps._buffer[k];
+        StairEdge e;
+        e.start = vector(m.start);
+        e.end = vector(m.end);
+        for (int j = 0; j < 4; ++j) e.cov_rho_theta(j / 2, j % 2) = m.cov_rho_theta[j];
+        e.num_points = m.num_points;
+        if (!e.start.allFinite() || !e.end.allFinite() || !e.cov_rho_theta.allFinite())
+            throw std::invalid_argument(name + ": non-finite step " + std::to_string(k));
+        st.steps.push_back(e);
+        l.step_observations.push_back(m.observations);
+    }
+    if (st.steps.empty()) throw std::invalid_argument(name + ": no steps");
+    if (!st.location.allFinite() || !std::isfinite(st.heading_rad) || !std::isfinite(st.step_height) ||
+        !std::isfinite(st.step_depth) || !std::isfinite(st.step_width) || !std::isfinite(st.slope_rad))
+        throw std::invalid_argument(name + ": non-finite geometry");
+    return l;
+}
+
+}  // namespace
+
+LandmarkMapState landmarkState(const stairmap_msgs_msg_dds__StaircaseArray_& message) {
+    LandmarkMapState state;
+    std::set<int> ids;
+    for (uint32_t i = 0; i < message.staircases._length && message.staircases._buffer != nullptr; ++i) {
+        StaircaseLandmark l = landmarkOf(message.staircases._buffer[i]);
+        if (l.id < 0 || !ids.insert(l.id).second)
+            throw std::invalid_argument("staircase " + std::to_string(l.id) + ": negative or duplicate id");
+        state.next_landmark_id = std::max(state.next_landmark_id, l.id + 1);
+        state.staircases.push_back(std::move(l));
+    }
+    std::sort(state.staircases.begin(), state.staircases.end(),
+              [](const StaircaseLandmark& a, const StaircaseLandmark& b) { return a.id < b.id; });
+    std::set<int> floor_ids;
+    for (uint32_t i = 0; i < message.floors._length && message.floors._buffer != nullptr; ++i) {
+        const auto& m = message.floors._buffer[i];
+        if (m.id < 0 || !std::isfinite(m.z) || !floor_ids.insert(m.id).second)
+            throw std::invalid_argument("floor " + std::to_string(m.id) + ": negative, duplicate or non-finite");
+        Floor f;
+        f.id = m.id;
+        f.z = m.z;
+        f.robot_samples = std::max(1, m.support);
+        f.robot_z_sum = m.z * f.robot_samples;
+        state.next_floor_id = std::max(state.next_floor_id, f.id + 1);
+        state.floor_levels.push_back(f);
+    }
+    std::sort(state.floor_levels.begin(), state.floor_levels.end(),
+              [](const Floor& a, const Floor& b) { return a.id < b.id; });
+    // a link to a floor the message does not carry is dropped rather than left dangling
+    for (StaircaseLandmark& l : state.staircases) {
+        if (!floor_ids.count(l.bottom_floor)) l.bottom_floor = -1;
+        if (!floor_ids.count(l.top_floor)) l.top_floor = -1;
+    }
+    return state;
 }
 
 }  // namespace stairmap::ros2

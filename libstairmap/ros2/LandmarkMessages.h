@@ -55,4 +55,10 @@ private:
     std::vector<stairmap_msgs_msg_dds__Floor_> floors_;
 };
 
+/// A received StaircaseArray back as a landmark map state (landmarks, their floors; ids kept,
+/// next ids above the largest). Floors carry only their support (as robot samples). Throws
+/// std::invalid_argument naming the landmark for non-finite numbers, a staircase without steps
+/// or duplicate ids (the caller counts it as malformed).
+LandmarkMapState landmarkState(const stairmap_msgs_msg_dds__StaircaseArray_& message);
+
 }  // namespace stairmap::ros2
