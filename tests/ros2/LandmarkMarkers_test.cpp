@@ -116,3 +116,54 @@ TEST(LandmarkMessages, StaircaseArrayCarriesWhatPlannersUse) {
 
 }  // namespace
 }  // namespace stairmap::ros2
+
+namespace stairmap::ros2 {
+namespace {
+
+TEST(LandmarkMessages, StaircaseArrayReadsBackIntoTheSameLandmarks) {
+    StaircaseLandmark l = flight(6, 4, true);
+    l.first_seen_s = 5.5;
+    l.last_seen_s = 9.25;
+    l.bottom_floor = 2;
+    l.top_floor = 7;  // a floor the message does not carry: the link is dropped
+    l.stairs.steps[2].cov_rho_theta << 1e-3, 2e-4, 2e-4, 5e-3;
+    l.stairs.steps[2].num_points = 31;
+    Floor f;
+    f.id = 2;
+    f.z = -0.5;
+    f.robot_samples = 4;
+    const StaircaseArrayMessage message({flight(1, 2, false), l}, {f}, 9.25, "map");
+    const LandmarkMapState state = landmarkState(*message.sample());
+    ASSERT_EQ(state.staircases.size(), 2u);
+    const StaircaseLandmark& back = state.staircases[1];
+    EXPECT_EQ(back.id, 6);
+    EXPECT_EQ(state.next_landmark_id, 7);
+    ASSERT_EQ(back.stairs.steps.size(), 4u);
+    EXPECT_TRUE(back.stairs.steps[3].end.isApprox(l.stairs.steps[3].end));
+    EXPECT_EQ(back.stairs.steps[2].cov_rho_theta, l.stairs.steps[2].cov_rho_theta);
+    EXPECT_EQ(back.stairs.steps[2].num_points, 31);
+    EXPECT_EQ(back.step_observations, l.step_observations);
+    EXPECT_DOUBLE_EQ(back.last_seen_s, 9.25);
+    EXPECT_EQ(back.bottom_floor, 2);
+    EXPECT_EQ(back.top_floor, -1);
+    EXPECT_TRUE(back.confirmed);
+    ASSERT_EQ(state.floor_levels.size(), 1u);
+    EXPECT_EQ(state.floor_levels[0].z, -0.5);
+}
+
+TEST(LandmarkMessages, MalformedStaircaseArrayIsRefusedWithTheLandmark) {
+    const StaircaseArrayMessage message({flight(9, 2, true)}, {}, 1.0, "map");
+    stairmap_msgs_msg_dds__StaircaseArray_ broken = *message.sample();
+    stairmap_msgs_msg_dds__Staircase_ staircase = broken.staircases._buffer[0];
+    staircase.steps._length = 0;
+    broken.staircases._buffer = &staircase;
+    try {
+        landmarkState(broken);
+        FAIL() << "accepted a staircase without steps";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("staircase 9"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace stairmap::ros2
