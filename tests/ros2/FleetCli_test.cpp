@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <iostream>
 #include <memory>
 
 #include "StairmapMessages.h"
@@ -62,8 +63,14 @@ TEST(FleetCli, MergesTwoRobotsAndKeepsASilentRobotsLandmarks) {
     EXPECT_TRUE(b_only_in_place);
 
     robot_b.reset();  // robot B goes away
+    const auto published = std::chrono::steady_clock::now();
     robot_a->publish(fleetlive::test::robotA(true).staircases, {}, 101.0);  // A finds a 5th flight
     const bool kept = fleet_map.receive(take, [&] { return latest.staircases.size() == 5; }, 20s);
+    // reported, not asserted (timing belongs to benchmarks): robot publish -> fleet map received
+    const double latency_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - published).count();
+    RecordProperty("fleet_latency_ms", std::to_string(latency_ms));
+    std::cout << "robot map -> fleet map latency: " << latency_ms << " ms\n";
     EXPECT_TRUE(kept) << latest.staircases.size() << " staircases; " << test::fileText(child.stderr_path);
     ::kill(pid, SIGINT);
     EXPECT_EQ(test::waitForExit(pid, 20s), 0) << test::fileText(child.stderr_path);
