@@ -73,6 +73,7 @@ int runPlay(const PlayOptions& opt, std::string& input) {
         const ros2::PlaybackResult r = ros2::playScans(source, publisher, playback, stop);
         scans += r.scans;
         points += r.points;
+        if (stop()) break;
         if (r.scans == 0)
             throw std::runtime_error(opt.rawlog + ": no 3D scan with a pose (give --poses or --static-robot)");
         // the next pass continues one mean scan period after this one
