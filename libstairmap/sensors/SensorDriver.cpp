@@ -22,6 +22,9 @@ struct SensorDriver::Impl {
 
 namespace {
 
+/// The driver's data port (a `short` in MRPT: ports above 32767 read as negative).
+std::uint16_t dataPort() { return std::uint16_t(CVelodyneScanner::VELODYNE_DATA_UDP_PORT); }
+
 CGenericSensor::Ptr createDriver(const DriverSection& s) {
     CGenericSensor::Ptr sensor;
     try {
@@ -40,14 +43,14 @@ CGenericSensor::Ptr createDriver(const DriverSection& s) {
 PcapSummary checkPcap(const DriverSection& s) {
     PcapSummary summary;
     try {
-        summary = probePcap(s.pcap_input, std::uint16_t(CVelodyneScanner::VELODYNE_DATA_UDP_PORT));
+        summary = probePcap(s.pcap_input, dataPort());
     } catch (const std::exception& e) {
         throw std::runtime_error(s.identity() + ": pcap_input " + e.what());
     }
     if (summary.data_packets == 0) {
         throw std::runtime_error(s.identity() + ": pcap_input " + s.pcap_input +
                                  ": holds no complete Velodyne data packet (1206-byte UDP payload to port " +
-                                 std::to_string(CVelodyneScanner::VELODYNE_DATA_UDP_PORT) + ")" +
+                                 std::to_string(dataPort()) + ")" +
                                  (summary.truncated ? "; the file is cut short" : ""));
     }
     return summary;
@@ -85,7 +88,7 @@ bool SensorDriver::selfPaced() const { return impl_->velodyne != nullptr; }
 
 std::string SensorDriver::describe() const {
     std::string d = section_.driver + " [" + section_.section + "]";
-    if (!pcap_) return d + (impl_->velodyne ? " on live UDP port " + std::to_string(CVelodyneScanner::VELODYNE_DATA_UDP_PORT) : "");
+    if (!pcap_) return d + (impl_->velodyne ? " on live UDP port " + std::to_string(dataPort()) : "");
     return d + " replaying " + section_.pcap_input + " (" + (section_.pcap_read_once ? "once" : "looped") + ", " +
            (section_.pcap_read_fast ? "fast" : "recorded rate") + ")";
 }

@@ -146,3 +146,15 @@ TEST(SensorSourcePcap, StopsSoonAfterTheStopFlagOnALoopedReplay) {
     EXPECT_GT(sink.scans.size(), 4u);  // the file was replayed more than once
     EXPECT_LT(latency, 0.5);
 }
+
+// The example shipped in config/ opens from any working directory (pcap path relative to the INI).
+TEST(SensorSourcePcap, ShippedExampleIni) {
+    sensors::SensorSourceOptions options;
+    options.static_robot = true;
+    auto source = sensors::makeSensorSource(std::string(STAIRMAP_SOURCE_DIR) + "/config/sensors/vlp16_pcap.ini", options);
+    EXPECT_NE(source->describe().find("sample_velodyne_vlp16_gps.pcap"), std::string::npos) << source->describe();
+    CollectingSink sink;
+    std::atomic<bool> stop{false};
+    source->run(sink, stop);
+    EXPECT_EQ(sink.scans.size(), 4u);
+}
