@@ -102,7 +102,8 @@ SensorSource::SensorSource(const std::string& ini_path, const SensorSourceOption
         poses_->refresh();  // a malformed pose file fails here, before any output is touched
     }
     for (const char* key : {"observations", "scans", "scans_pushed", "scans_without_pose", "bad_observations",
-                            "other_observations", "points_pushed", "driver_errors", "dropped_scans"}) {
+                            "other_observations", "points_pushed", "driver_errors", "dropped_scans",
+                            "skipped_label"}) {
         counters_.add(key, 0);
     }
 }
@@ -117,6 +118,11 @@ void SensorSource::handleObservation(mrpt::obs::CObservation& obs, const SensorD
     counters_.add("observations");
     if (!io::isConvertible3DObservation(obs)) {
         counters_.add("other_observations");  // e.g. the Velodyne's GPS packets
+        return;
+    }
+    const std::string& wanted = options_.sensor_label;
+    if (!wanted.empty() && obs.sensorLabel != wanted && obs.sensorLabel != wanted + "_SCAN") {
+        counters_.add("skipped_label");
         return;
     }
     counters_.add("scans");

@@ -38,6 +38,9 @@ struct SensorSourceOptions {
     /// an error (two poses for one sensor). Unset: the driver's pose_* keys (default identity).
     std::optional<Eigen::Isometry3d> T_robot_sensor;
     io::ObservationConversionParams conversion;  ///< Velodyne range limits (as `map`)
+    /// Only 3D observations with this label ([sensor] label_filter); MRPT's Velodyne driver labels
+    /// its scans "<sensorLabel>_SCAN", so either form matches. Empty: all.
+    std::string sensor_label;
     double poll_period_s = 0.02;  ///< [s] how often waiting scans and the pose file are looked at
 };
 

@@ -158,3 +158,20 @@ TEST(SensorSourcePcap, ShippedExampleIni) {
     source->run(sink, stop);
     EXPECT_EQ(sink.scans.size(), 4u);
 }
+
+// [sensor] label_filter: "lidar" matches MRPT's "lidar_SCAN"; another label skips every scan.
+TEST(SensorSourcePcap, LabelFilter) {
+    const std::string ini = writeFile(tempDir("label") + "/vlp16.ini", velodyneIni(kPcap, true));
+    for (const std::string label : {"lidar", "lidar_SCAN", "other"}) {
+        sensors::SensorSourceOptions options;
+        options.static_robot = true;
+        options.sensor_label = label;
+        auto source = sensors::makeSensorSource(ini, options);
+        CollectingSink sink;
+        std::atomic<bool> stop{false};
+        source->run(sink, stop);
+        const bool match = label != "other";
+        EXPECT_EQ(sink.scans.size(), match ? 4u : 0u) << label;
+        EXPECT_EQ(source->counters().at("skipped_label"), match ? 0u : 4u) << label;
+    }
+}
