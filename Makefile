@@ -22,6 +22,7 @@ DEB_PACKAGES := cmake make g++ \
 # Sanitizer settings: leaks are findings; UBSan prints a stack. The only suppressions are for
 # third-party code, each explained in the file.
 SAN_ASAN_OPTIONS  := detect_leaks=1:strict_init_order=1
+SAN_LSAN_OPTIONS  := suppressions=$(CURDIR)/.ci/lsan.supp:print_suppressions=0
 SAN_UBSAN_OPTIONS := print_stacktrace=1:halt_on_error=1:suppressions=$(CURDIR)/.ci/ubsan.supp
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -68,7 +69,8 @@ test-sanitize: deps
 	cmake -S . -B $(SAN_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
 	  -DSTAIRMAP_SANITIZE=ON -DSTAIRMAP_BUILD_BENCH=OFF
 	cmake --build $(SAN_DIR) -j $(JOBS)
-	cd $(SAN_DIR) && ASAN_OPTIONS=$(SAN_ASAN_OPTIONS) UBSAN_OPTIONS=$(SAN_UBSAN_OPTIONS) \
+	cd $(SAN_DIR) && ASAN_OPTIONS=$(SAN_ASAN_OPTIONS) LSAN_OPTIONS=$(SAN_LSAN_OPTIONS) \
+	  UBSAN_OPTIONS=$(SAN_UBSAN_OPTIONS) \
 	  ctest --output-on-failure -j $(JOBS)
 
 # libFuzzer drivers (fuzz/, clang) over the seed corpora; each target runs FUZZ_SECONDS seconds.

@@ -86,6 +86,11 @@ int runWindow(viewer::ViewerController& c, const ViewOptions& o) {
         w.script = viewer::loadScript(o.script);
         w.has_script = true;
     }
+    w.on_click_select = [](int id) {  // one line per click, for logs and tests
+        if (id >= 0) std::printf("stairmap view: selected landmark #%d\n", id);
+        else std::printf("stairmap view: selection cleared\n");
+        std::fflush(stdout);
+    };
     const auto stats = viewer::runViewerWindow(c, w);
     std::printf("stairmap view: %zu frames in %.1f s (%.1f fps), %zu of %zu scans\n", stats.frames,
                 stats.seconds, stats.fps(), c.state().target(), c.state().numScans());
@@ -115,7 +120,8 @@ Command addViewCommand(CLI::App& app) {
     command.cli = app.add_subcommand(
         "view", "Replay a rawlog through the mapper (as `stairmap map`, same results) or browse a\n"
                 "finished map folder, in a window (keys: space play/pause, Right/Left step,\n"
-                "Up/Down speed, Home restart, Tab next landmark, C camera, 1-8 layers, Q quit)\n"
+                "Up/Down speed, Home restart, Tab next landmark, click selects one,\n"
+                "C camera, 1-8 layers, Q quit)\n"
                 "or headless (--headless --frames DIR / --video OUT.mp4). Exit codes: 0 ok;\n"
                 "2 bad arguments/input.");
     auto* c = command.cli;

@@ -59,6 +59,13 @@ void ViewerController::selectNextLandmark() {
     state_.selectNext(ids);
 }
 
+int ViewerController::selectAlongRay(const viz::ViewRay& ray) {
+    const auto& landmarks = session_ ? session_->mapper().landmarks().staircases()
+                                     : folder_->landmarks.staircases();
+    state_.select(viz::pickLandmark(landmarks, ray));
+    return state_.selected();
+}
+
 std::string ViewerController::status() const {
     const auto& landmarks = session_ ? session_->mapper().landmarks().staircases()
                                      : folder_->landmarks.staircases();

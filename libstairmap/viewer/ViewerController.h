@@ -10,6 +10,7 @@
 #include "replay/MapFolder.h"
 #include "replay/ReplaySession.h"
 #include "viewer/ViewerState.h"
+#include "viz/ViewPicking.h"
 #include "viz/ViewerScene.h"
 
 namespace stairmap::viewer {
@@ -32,6 +33,9 @@ public:
     viz::ViewFrame frame() const;
     /// Tab: the next landmark of the current frame.
     void selectNextLandmark();
+    /// A click: selects the landmark the ray through the clicked pixel meets first, or clears
+    /// the selection when it meets none. Returns the selected id (-1 = none).
+    int selectAlongRay(const viz::ViewRay& ray);
     /// "scan 12/83 | t 1.20 s | 28811 pts | detector 1.8 ms | landmarks 2 (1 confirmed) | x1 playing"
     std::string status() const;
     /// Lines about the selected landmark (empty when none): ID, direction, steps, rise/run/width

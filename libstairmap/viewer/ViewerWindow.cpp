@@ -25,11 +25,49 @@ void applyCamera(mrpt::gui::CGlCanvasBase& canvas, const viz::CameraView& v) {
     canvas.setElevationDegrees(static_cast<float>(v.elevation_deg));
 }
 
+/// The canvas' current camera (the mouse may have moved it since applyCamera).
+viz::CameraView cameraOf(const mrpt::gui::CGlCanvasBase& canvas) {
+    viz::CameraView v;
+    v.target = {canvas.getCameraPointingX(), canvas.getCameraPointingY(),
+                canvas.getCameraPointingZ()};
+    v.distance_m = canvas.getZoomDistance();
+    v.azimuth_deg = canvas.getAzimuthDegrees();
+    v.elevation_deg = canvas.getElevationDegrees();
+    return v;
+}
+
+/// The MRPT window, with left clicks on the scene (not on the panel, not a camera drag) reported.
+class ClickableWindow : public mrpt::gui::CDisplayWindowGUI {
+public:
+    using CDisplayWindowGUI::CDisplayWindowGUI;
+    std::function<void(int x_px, int y_px)> on_click;
+
+    bool mouseButtonEvent(const nanogui::Vector2i& p, int button, bool down,
+                          int modifiers) override {
+        constexpr int kClickSlackPx = 4;  // more movement than this between press and release: a drag
+        if (button == GLFW_MOUSE_BUTTON_1 && findWidget(p) == this) {
+            if (down) {
+                press_ = p;
+                pressed_ = true;
+            } else if (pressed_ && (p - press_).cwiseAbs().maxCoeff() <= kClickSlackPx && on_click) {
+                on_click(p.x(), p.y());
+            }
+        }
+        if (!down) pressed_ = false;
+        return CDisplayWindowGUI::mouseButtonEvent(p, button, down, modifiers);
+    }
+
+private:
+    nanogui::Vector2i press_ = nanogui::Vector2i::Zero();
+    bool pressed_ = false;
+};
+
 /// The loop of one window: script, pacing, replay, scene and panel updates.
 class WindowLoop {
 public:
     WindowLoop(ViewerController& c, const WindowOptions& o, mrpt::gui::CDisplayWindowGUI& win)
-        : c_(c), win_(win), panel_(win, c), script_(o.script), has_script_(o.has_script) {}
+        : c_(c), win_(win), panel_(win, c), script_(o.script), has_script_(o.has_script),
+          on_select_(o.on_click_select) {}
 
     void onFrame() {
         const double now = std::chrono::duration<double>(Clock::now() - t0_).count();
@@ -55,6 +93,14 @@ public:
         if (a.verb.empty()) return false;
         applyAction(a, c_);
         return true;
+    }
+
+    /// A click at window pixel (x, y): the landmark under it becomes the selection.
+    void onClick(int x_px, int y_px) {
+        const viz::ViewImage image{win_.width(), win_.height(), 60.0};
+        const int id = c_.selectAlongRay(
+            viz::rayThroughPixel(cameraOf(win_.camera()), image, x_px + 0.5, y_px + 0.5));
+        if (on_select_) on_select_(id);
     }
 
     const WindowStats& stats() const { return stats_; }
@@ -83,6 +129,7 @@ private:
     ViewerPanel panel_;
     ScriptRunner script_;
     bool has_script_;
+    std::function<void(int)> on_select_;
     Clock::time_point t0_ = Clock::now();
     WindowStats stats_;
     viz::ViewLayers layers_;
@@ -117,10 +164,11 @@ WindowStats runViewerWindow(ViewerController& controller, const WindowOptions& o
     WindowStats stats;
     {
         mrpt::gui::CDisplayWindowGUI_Params params;
-        mrpt::gui::CDisplayWindowGUI win(options.title, options.width, options.height, params);
+        ClickableWindow win(options.title, options.width, options.height, params);
         win.background_scene = mrpt::opengl::COpenGLScene::Create();
         WindowLoop loop(controller, options, win);
         win.addLoopCallback([&loop] { loop.onFrame(); });
+        win.on_click = [&loop](int x, int y) { loop.onClick(x, y); };
         win.addKeyboardCallback([&loop](int key, int, int action, int) { return loop.onKey(key, action); });
         win.performLayout();
         win.drawAll();

@@ -2,8 +2,10 @@
 // The interactive viewer window: mrpt::gui::CDisplayWindowGUI (GLFW + nanogui) with the 3D scene in
 // the background and a control panel (playback, timeline, speed, layers, camera, selected
 // landmark, status). Keys: space play/pause, Right/Left step, Up/Down speed, Home restart,
-// Tab next landmark, C camera, 1-8 layers, Q/Esc quit.
+// Tab next landmark, C camera, 1-8 layers, Q/Esc quit. A left click (without dragging) on a
+// landmark selects it; a click on empty space clears the selection.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,8 @@ struct WindowOptions {
     int height = 720;   ///< [px]
     std::vector<ScriptAction> script;  ///< run against the clock; the window closes at its end
     bool has_script = false;
+    /// Told the selected landmark id (-1 = none) after each click in the scene (may be empty).
+    std::function<void(int)> on_click_select;
 };
 
 struct WindowStats {
