@@ -26,5 +26,6 @@ Command addMergeCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addAnnotateCommand(CLI::App& app);
+Command addLiveCommand(CLI::App& app);
 
 }  // namespace stairmap::apps

@@ -23,9 +23,8 @@
 #include "io/system/DirectoryLock.h"
 #include "io/system/ProgressBar.h"
 #include "io/system/StopSignals.h"
+#include "mapout/MapOutputs.h"
 #include "pipeline/Mapper.h"
-#include "viz/MapOverview.h"
-#include "viz/MapScene.h"
 
 namespace stairmap::apps {
 namespace {
@@ -114,7 +113,7 @@ class MapRun {
 
   private:
     std::string outPath(const std::string& name) const {
-        return (fs::path(opt_.out) / name).string();
+        return mapout::outputPath(opt_.out, name);
     }
 
     pipeline::MapperParams loadParams() const {
@@ -202,14 +201,7 @@ class MapRun {
 
     void writeOutputs(const io::RawlogScanSource& source, io::AtomicOutputStream& detections) {
         const auto t0 = Clock::now();
-        io::saveLandmarkMapAtomic(outPath("landmarks.json"), mapper_.landmarks());
-        io::writeFileAtomic(outPath("map.bt"),
-                            [&](const std::string& p) { mapper_.voxelMap().save(p); });
-        const viz::MapView view = mapView();
-        io::writeFileAtomic(outPath("scene.3Dscene"),
-                            [&](const std::string& p) { viz::saveMapScene(view, p); });
-        io::writeFileAtomic(outPath("overview.png"),
-                            [&](const std::string& p) { viz::saveMapOverview(view, p); });
+        mapout::writeMapOutputs(mapper_, opt_.out);
         detections.commit();
         times_.output_s = secondsSince(t0);
         io::writeTextFileAtomic(outPath("stats.json"),
@@ -227,15 +219,6 @@ class MapRun {
         std::cerr << "stairmap map: error: " << *error
                   << " (outputs written for the map up to there)\n";
         return kExitTruncated;
-    }
-
-    viz::MapView mapView() const {
-        viz::MapView view;
-        view.voxels = &mapper_.voxelMap();
-        view.staircases = mapper_.landmarks().staircases();
-        view.floors = mapper_.landmarks().floors();
-        for (const auto& s : mapper_.trajectory()) view.trajectory.push_back(s.position);
-        return view;
     }
 
     MapOptions opt_;

@@ -1,5 +1,5 @@
 // stairmap: one executable, one subcommand per job (detect, sim, eval, map, merge, export, view,
-// annotate).
+// annotate, live).
 
 #include <exception>
 #include <new>
@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
     std::vector<Command> commands = {addDetectCommand(app), addSimCommand(app),
                                      addEvalCommand(app), addMapCommand(app),
                                      addMergeCommand(app), addExportCommand(app),
-                                     addViewCommand(app), addAnnotateCommand(app)};
+                                     addViewCommand(app), addAnnotateCommand(app),
+                                     addLiveCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -52,8 +52,8 @@ void checkReadable(const std::string& path) {
 
 struct RawlogScanSource::Impl {
     RawlogSourceParams params;
-    std::optional<TumTrajectory> trajectory;
-    mrpt::io::CFileGZInputStream file;
+    RawlogScanSource::PoseLookup pose_lookup;  // preference 1 (a TUM trajectory) when set
+    std::unique_ptr<mrpt::io::CStream> stream;
     mrpt::serialization::CArchive::UniquePtr archive;
     RobotPoseMatcher matcher;
     std::deque<Scan> ready;
@@ -71,13 +71,30 @@ RawlogScanSource::RawlogScanSource(const std::string& path, const RawlogSourcePa
                                    std::optional<TumTrajectory> trajectory)
     : path_(path), impl_(std::make_unique<Impl>(params)) {
     checkReadable(path);
-    impl_->trajectory = std::move(trajectory);
+    if (trajectory) {
+        const double tolerance_s = params.tum_tolerance_s;
+        impl_->pose_lookup = [trajectory = std::move(*trajectory), tolerance_s](double t) {
+            return trajectory.poseAt(t, tolerance_s);
+        };
+    }
+    auto file = std::make_unique<mrpt::io::CFileGZInputStream>();
     try {
-        if (!impl_->file.open(path)) throw std::runtime_error("open failed");
+        if (!file->open(path)) throw std::runtime_error("open failed");
     } catch (const std::exception& e) {
         throw std::runtime_error(path + ": cannot open rawlog: " + shortReason(e));
     }
-    impl_->archive = mrpt::serialization::archiveUniquePtrFrom(impl_->file);
+    impl_->stream = std::move(file);
+    impl_->archive = mrpt::serialization::archiveUniquePtrFrom(*impl_->stream);
+}
+
+RawlogScanSource::RawlogScanSource(std::unique_ptr<mrpt::io::CStream> stream,
+                                   const std::string& name, const RawlogSourceParams& params,
+                                   PoseLookup poses)
+    : path_(name), impl_(std::make_unique<Impl>(params)) {
+    if (!stream) throw std::invalid_argument(name + ": no stream to read");
+    impl_->pose_lookup = std::move(poses);
+    impl_->stream = std::move(stream);
+    impl_->archive = mrpt::serialization::archiveUniquePtrFrom(*impl_->stream);
 }
 
 RawlogScanSource::~RawlogScanSource() = default;
@@ -156,8 +173,8 @@ void RawlogScanSource::handleScan(const mrpt::obs::CObservation& obs, double sta
     scan.stamp_s = stamp_s;
     scan.sensor_label = obs.sensorLabel;
     scan.points_robot = std::move(converted.points_robot);
-    if (impl_->trajectory) {  // preference 1: the TUM trajectory decides alone
-        const auto T = impl_->trajectory->poseAt(stamp_s, impl_->params.tum_tolerance_s);
+    if (impl_->pose_lookup) {  // preference 1: the TUM trajectory decides alone
+        const auto T = impl_->pose_lookup(stamp_s);
         if (!T) {
             noteSkippedNoPose();
             return;
@@ -215,12 +232,12 @@ void RawlogScanSource::handleObject(const mrpt::serialization::CSerializable::Pt
 }
 
 void RawlogScanSource::readOneObject() {
-    const uint64_t start = impl_->file.getPosition();
+    const uint64_t start = impl_->stream->getPosition();
     mrpt::serialization::CSerializable::Ptr object;
     try {
         object = guardedReadObject(*impl_->archive, impl_->params.max_object_bytes);
     } catch (const std::exception& e) {
-        if (impl_->file.getPosition() == start) {  // nothing of a new object: clean end
+        if (impl_->stream->getPosition() == start) {  // nothing of a new object: clean end
             impl_->eof = true;
             return;
         }
@@ -249,7 +266,7 @@ void RawlogScanSource::noteSkippedNoPose() {
     ++stats_.skipped_no_pose;
     if (!impl_->warned_no_pose) {
         impl_->warned_no_pose = true;
-        warn(impl_->trajectory
+        warn(impl_->pose_lookup
                  ? "scan outside the TUM trajectory's time span skipped; further ones only counted"
                  : "scan without robot pose skipped (no CObservationRobotPose within tolerance, "
                    "no odometry); further ones only counted");

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/io/CStream.h>
 #include <mrpt/obs/CObservation.h>
 
 #include "core/Scan.h"
@@ -69,6 +70,14 @@ public:
     /// `trajectory`, if given, is the sole pose source (preference 1 above).
     explicit RawlogScanSource(const std::string& path, const RawlogSourceParams& params = {},
                               std::optional<TumTrajectory> trajectory = std::nullopt);
+    /// A pose for a scan time, or std::nullopt (the scan is then skipped and counted).
+    using PoseLookup = std::function<std::optional<Eigen::Isometry3d>(double stamp_s)>;
+    /// Reads the rawlog from `stream` (plain, uncompressed data; e.g. a growing file whose Read
+    /// waits for more bytes); `name` prefixes every message. `poses`, if set, is the sole pose
+    /// source (preference 1 above, e.g. a TUM trajectory still being written); it is called once
+    /// per scan, on the thread calling next(), and may block.
+    RawlogScanSource(std::unique_ptr<mrpt::io::CStream> stream, const std::string& name,
+                     const RawlogSourceParams& params, PoseLookup poses);
     ~RawlogScanSource() override;
 
     /// Next scan (robot-frame points, T_world_robot). std::nullopt at the end. On a truncated or
