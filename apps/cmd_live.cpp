@@ -24,12 +24,15 @@
 #include "live/LiveRunner.h"
 #include "mapout/MapOutputs.h"
 #include "pipeline/Mapper.h"
+#include "sensors/SensorSource.h"
 
 namespace stairmap::apps {
 namespace {
 
 struct LiveOptions {
     std::string follow;  ///< --follow FILE.rawlog
+    std::string sensor;  ///< --sensor F.ini (MRPT drivers, rawlog-grabber sections)
+    std::string sensor_stamps = "arrival";  ///< --sensor-stamps arrival|sensor
     // (--sensor and --ros2 add their option here and one branch in makeSource.)
     std::string poses, config, map_in, out;
     bool static_robot = false, progress = false, quiet = false;
@@ -56,7 +59,19 @@ std::unique_ptr<live::LiveSource> makeSource(const LiveOptions& opt,
         p.on_warning = [](const std::string& m) { std::cerr << "stairmap live: warning: " << m << "\n"; };
         return std::make_unique<io::RawlogFollowSource>(opt.follow, p);
     }
-    throw std::runtime_error("no source: give exactly one of --follow FILE.rawlog");
+    if (!opt.sensor.empty()) {
+        input = opt.sensor;
+        sensors::SensorSourceOptions p;
+        p.poses_path = opt.poses;
+        p.static_robot = opt.static_robot;
+        p.pose_wait.max_wait_s = opt.pose_wait_s;
+        p.stamps = opt.sensor_stamps == "sensor" ? sensors::SensorSourceOptions::Stamps::Sensor
+                                                 : sensors::SensorSourceOptions::Stamps::Arrival;
+        p.sensor_label = params.sensor.label_filter;
+        p.T_robot_sensor = sensors::sensorPoseOnRobot(params.sensor);
+        return sensors::makeSensorSource(opt.sensor, p);
+    }
+    throw std::runtime_error("no source: give exactly one of --follow FILE.rawlog, --sensor F.ini");
 }
 
 /// landmarks.json rewritten atomically on every change (a run killed outright keeps the latest).
@@ -177,6 +192,16 @@ void addLiveOptions(CLI::App& cmd, LiveOptions& opt) {
     cmd.add_option("--follow", opt.follow,
                    "a plain (not gzip) rawlog that is still being written: objects are mapped as "
                    "they are completed; the run ends when it stops growing (--idle-timeout)");
+    cmd.add_option("--sensor", opt.sensor,
+                   "MRPT sensor drivers configured as for rawlog-grabber (every section but [global] "
+                   "is one sensor, e.g. driver = CVelodyneScanner on live UDP or replaying "
+                   "pcap_input; config/sensors/vlp16_pcap.ini); needs --poses or --static-robot")
+        ->excludes("--follow");
+    cmd.add_option("--sensor-stamps", opt.sensor_stamps,
+                   "--sensor: stamp scans with the computer clock on arrival (arrival, default) or "
+                   "keep the driver's stamps (sensor; MRPT's Velodyne driver switches to GPS time "
+                   "once it has a fix); --poses must use the same clock")
+        ->check(CLI::IsMember({"arrival", "sensor"}));
     cmd.add_option("--poses", opt.poses,
                    "TUM trajectory of the robot, may itself be growing (else "
                    "CObservationRobotPose / odometry in the rawlog)");
@@ -213,7 +238,7 @@ Command addLiveCommand(CLI::App& app) {
     command.cli = app.add_subcommand(
         "live",
         "Map scans as they arrive from one live source (the same mapper as `map`).\n"
-        "Source (exactly one): --follow FILE.rawlog.\n"
+        "Source (exactly one): --follow FILE.rawlog, --sensor F.ini.\n"
         "Writes into --out (one run per folder, lock file .stairmap.lock): landmarks.json on\n"
         "every landmark change, stats.json every few seconds (scans/s, lag, dropped scans,\n"
         "latency median/p95, source counters, peak RSS), and landmarks.json, map.bt,\n"
