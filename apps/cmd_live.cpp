@@ -219,7 +219,8 @@ void addLiveOptions(CLI::App& cmd, LiveOptions& opt) {
         ->check(CLI::PositiveNumber);
     cmd.add_option("--pose-wait", opt.pose_wait_s,
                    "--poses: a scan waits for its pose while the TUM file grows; gives up after "
-                   "S seconds without growth [s] (default 5; the scan is then counted, skipped)")
+                   "S seconds without growth (--sensor: S seconds after the scan arrived) [s] "
+                   "(default 5; the scan is then counted, skipped)")
         ->check(CLI::NonNegativeNumber);
     cmd.add_option("--queue", opt.queue, "input queue capacity [scans] (default 4)")
         ->check(CLI::Range(1, 1000));
