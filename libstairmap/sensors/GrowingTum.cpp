@@ -39,6 +39,16 @@ bool GrowingTum::refresh() {
     return trajectory_.size() > before;
 }
 
+void GrowingTum::forgetBefore(double t) {
+    const auto& poses = trajectory_.poses();
+    std::size_t first = 0;  // the last pose at or before t stays
+    while (first + 1 < poses.size() && poses[first + 1].stamp_s <= t) ++first;
+    if (first == 0 || 2 * first < poses.size()) return;
+    io::TumTrajectory kept;
+    for (std::size_t i = first; i < poses.size(); ++i) kept.append(poses[i].stamp_s, poses[i].T_world_robot);
+    trajectory_ = std::move(kept);
+}
+
 void GrowingTum::parseLine(const std::string& line) {
     const std::string where = path_ + ":" + std::to_string(line_number_) + ": ";
     const auto first = line.find_first_not_of(" \t\r");

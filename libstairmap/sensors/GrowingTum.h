@@ -1,7 +1,8 @@
 #pragma once
 // A TUM trajectory file that another program is still writing ("t x y z qx qy qz qw" lines, '#'
 // comments): each refresh() reads the lines completed since the last one. A last line without its
-// newline is left for the next refresh (writers flush in the middle of lines).
+// newline is left for the next refresh (writers flush in the middle of lines). Never blocks
+// (io/follow's GrowingTrajectory waits inside poseAt, which suits a lossless follower, not a sensor).
 
 #include <cstdint>
 #include <string>
@@ -19,6 +20,11 @@ public:
     /// "<path>:<line>: <problem>" for a malformed line or a time that does not increase, and
     /// "<path>: ..." if the file vanished or shrank (rewritten instead of appended to).
     bool refresh();
+
+    /// Forgets poses before `t` (keeping the last one before it, for interpolation), so a long run
+    /// holds a bounded window. Cost: amortised O(1) per pose (the copy happens once at least half
+    /// of the poses can go).
+    void forgetBefore(double t);
 
     const io::TumTrajectory& trajectory() const { return trajectory_; }
     const std::string& path() const { return path_; }

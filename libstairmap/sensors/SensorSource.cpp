@@ -192,6 +192,7 @@ bool SensorSource::deliver(live::ScanSink& sink) {
         poses_->refresh();
         ready = waiting_.release(poses_->trajectory(), std::chrono::duration<double>(Clock::now() - t0_).count());
         counters_.set("scans_without_pose", waiting_.withoutPose());
+        if (!ready.empty()) poses_->forgetBefore(ready.back().stamp_s - options_.keep_poses_s);
     }
     for (Scan& scan : ready) {
         counters_.add("scans_pushed");

@@ -42,6 +42,7 @@ struct SensorSourceOptions {
     /// its scans "<sensorLabel>_SCAN", so either form matches. Empty: all.
     std::string sensor_label;
     double poll_period_s = 0.02;  ///< [s] how often waiting scans and the pose file are looked at
+    double keep_poses_s = 30.0;   ///< [s] poses older than this before the newest delivered scan are forgotten
 };
 
 /// T_robot_sensor from [sensor] pose_x_m .. pose_roll_deg (MRPT's yaw-pitch-roll order);

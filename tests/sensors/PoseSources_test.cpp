@@ -209,3 +209,20 @@ TEST(SensorSourcePoses, SensorPoseFromTheStairmapConfig) {
         EXPECT_LT((b.scans[1].points_robot[i] - expected).norm(), 1e-4f) << i;
     }
 }
+
+TEST(GrowingTum, ForgetsOldPosesButKeepsOneForInterpolation) {
+    std::string text;
+    for (int i = 0; i < 100; ++i) text += tumLine(double(i), double(i));
+    const std::string path = writeFile(tempDir("growing_tum_forget") + "/p.tum", text);
+    sensors::GrowingTum tum(path);
+    tum.refresh();
+    tum.forgetBefore(20.5);  // fewer than half could go: nothing is copied yet
+    EXPECT_EQ(tum.trajectory().size(), 100u);
+    tum.forgetBefore(80.5);
+    ASSERT_EQ(tum.trajectory().size(), 20u);  // poses 80 .. 99
+    EXPECT_NEAR(tum.trajectory().poseAt(80.5)->translation().x(), 80.5, 1e-12);
+    EXPECT_FALSE(tum.trajectory().poseAt(79.0).has_value());
+    append(path, tumLine(100.0, 100.0));  // reading goes on where it was
+    EXPECT_TRUE(tum.refresh());
+    EXPECT_EQ(tum.trajectory().size(), 21u);
+}
