@@ -26,12 +26,15 @@
 #include "pipeline/Mapper.h"
 #include "ros2/Ros2LandmarkPublisher.h"
 #include "ros2/Ros2Source.h"
+#include "sensors/SensorSource.h"
 
 namespace stairmap::apps {
 namespace {
 
 struct LiveOptions {
     std::string follow;  ///< --follow FILE.rawlog
+    std::string sensor;  ///< --sensor F.ini (MRPT drivers, rawlog-grabber sections)
+    std::string sensor_stamps = "arrival";  ///< --sensor-stamps arrival|sensor
     // (--sensor and --ros2 add their option here and one branch in makeSource.)
     std::string poses, config, map_in, out;
     bool static_robot = false, progress = false, quiet = false;
@@ -48,7 +51,8 @@ constexpr int kExitSourceFailed = 1;  // the source broke (corrupt file); output
 std::unique_ptr<live::LiveSource> makeSource(const LiveOptions& opt,
                                              const pipeline::MapperParams& params,
                                              std::string& input) {
-    if (opt.ros2 && !opt.follow.empty()) throw std::invalid_argument("give one source: --follow or --ros2");
+    if (opt.ros2 && (!opt.follow.empty() || !opt.sensor.empty()))
+        throw std::invalid_argument("give one source: --follow, --sensor or --ros2");
     if (opt.ros2) {
         ros2::Ros2SourceOptions p;
         p.points_topic = opt.points_topic;
@@ -71,7 +75,19 @@ std::unique_ptr<live::LiveSource> makeSource(const LiveOptions& opt,
         p.on_warning = [](const std::string& m) { std::cerr << "stairmap live: warning: " << m << "\n"; };
         return std::make_unique<io::RawlogFollowSource>(opt.follow, p);
     }
-    throw std::runtime_error("no source: give exactly one of --follow FILE.rawlog, --ros2");
+    if (!opt.sensor.empty()) {
+        input = opt.sensor;
+        sensors::SensorSourceOptions p;
+        p.poses_path = opt.poses;
+        p.static_robot = opt.static_robot;
+        p.pose_wait.max_wait_s = opt.pose_wait_s;
+        p.stamps = opt.sensor_stamps == "sensor" ? sensors::SensorSourceOptions::Stamps::Sensor
+                                                 : sensors::SensorSourceOptions::Stamps::Arrival;
+        p.sensor_label = params.sensor.label_filter;
+        p.T_robot_sensor = sensors::sensorPoseOnRobot(params.sensor);
+        return sensors::makeSensorSource(opt.sensor, p);
+    }
+    throw std::runtime_error("no source: give exactly one of --follow FILE.rawlog, --sensor F.ini, --ros2");
 }
 
 /// landmarks.json rewritten atomically on every change (a run killed outright keeps the latest).
@@ -211,6 +227,16 @@ void addLiveOptions(CLI::App& cmd, LiveOptions& opt) {
     cmd.add_option("--odom-topic", opt.odom_topic, "--ros2: Odometry topic (default /odom)");
     cmd.add_option("--robot-name", opt.robot_name, "--ros2: publish under /NAME/stairmap/...");
     cmd.add_option("--frame-id", opt.frame_id, "--ros2: frame_id of what is published (default map)");
+    cmd.add_option("--sensor", opt.sensor,
+                   "MRPT sensor drivers configured as for rawlog-grabber (every section but [global] "
+                   "is one sensor, e.g. driver = CVelodyneScanner on live UDP or replaying "
+                   "pcap_input; config/sensors/vlp16_pcap.ini); needs --poses or --static-robot")
+        ->excludes("--follow");
+    cmd.add_option("--sensor-stamps", opt.sensor_stamps,
+                   "--sensor: stamp scans with the computer clock on arrival (arrival, default) or "
+                   "keep the driver's stamps (sensor; MRPT's Velodyne driver switches to GPS time "
+                   "once it has a fix); --poses must use the same clock")
+        ->check(CLI::IsMember({"arrival", "sensor"}));
     cmd.add_option("--poses", opt.poses,
                    "TUM trajectory of the robot, may itself be growing (else "
                    "CObservationRobotPose / odometry in the rawlog)");
@@ -229,6 +255,7 @@ void addLiveOptions(CLI::App& cmd, LiveOptions& opt) {
     cmd.add_option("--pose-wait", opt.pose_wait_s,
                    "--poses: a scan waits for its pose while the TUM file grows; gives up after "
                    "S seconds without growth [s] (default 5; the scan is then counted, skipped); "
+                   "--sensor: S seconds after the scan arrived; "
                    "--ros2: a cloud waits this long for odometry at or after its stamp")
         ->check(CLI::NonNegativeNumber);
     cmd.add_option("--queue", opt.queue, "input queue capacity [scans] (default 4)")
@@ -248,7 +275,8 @@ Command addLiveCommand(CLI::App& app) {
     command.cli = app.add_subcommand(
         "live",
         "Map scans as they arrive from one live source (the same mapper as `map`).\n"
-        "Source (exactly one): --follow FILE.rawlog, or --ros2 (ROS 2 topics; see README \"ROS 2\").\n"
+        "Source (exactly one): --follow FILE.rawlog, --sensor F.ini, or --ros2 (ROS 2 topics;\n"
+        "see README \"ROS 2\").\n"
         "Writes into --out (one run per folder, lock file .stairmap.lock): landmarks.json on\n"
         "every landmark change, stats.json every few seconds (scans/s, lag, dropped scans,\n"
         "latency median/p95, source counters, peak RSS), and landmarks.json, map.bt,\n"
