@@ -15,8 +15,8 @@ DEB_PACKAGES := cmake make g++ \
 	libmrpt-obs-dev libmrpt-maps-dev libmrpt-io-dev libmrpt-config-dev libmrpt-poses-dev \
 	libmrpt-system-dev libmrpt-serialization-dev libmrpt-opengl-dev libmrpt-img-dev \
 	liboctomap-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-	nlohmann-json3-dev libcli11-dev zlib1g-dev \
-	libmrpt-gui-dev xvfb xdotool x11-apps imagemagick ffmpeg mrpt-apps \
+	nlohmann-json3-dev libcli11-dev zlib1g-dev cyclonedds-dev cyclonedds-tools \
+	libmrpt-gui-dev libmrpt-hwdrivers-dev xvfb xdotool x11-apps imagemagick ffmpeg mrpt-apps \
 	clang-14 libclang-rt-14-dev
 
 # Sanitizer settings: leaks are findings; UBSan prints a stack. The only suppressions are for

@@ -27,5 +27,7 @@ Command addExportCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);
 Command addAnnotateCommand(CLI::App& app);
 Command addLiveCommand(CLI::App& app);
+Command addPlayCommand(CLI::App& app);
+Command addFleetCommand(CLI::App& app);
 
 }  // namespace stairmap::apps

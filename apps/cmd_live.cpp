@@ -24,17 +24,24 @@
 #include "live/LiveRunner.h"
 #include "mapout/MapOutputs.h"
 #include "pipeline/Mapper.h"
+#include "ros2/Ros2LandmarkPublisher.h"
+#include "ros2/Ros2Source.h"
+#include "sensors/SensorSource.h"
 
 namespace stairmap::apps {
 namespace {
 
 struct LiveOptions {
     std::string follow;  ///< --follow FILE.rawlog
+    std::string sensor;  ///< --sensor F.ini (MRPT drivers, rawlog-grabber sections)
+    std::string sensor_stamps = "arrival";  ///< --sensor-stamps arrival|sensor
     // (--sensor and --ros2 add their option here and one branch in makeSource.)
     std::string poses, config, map_in, out;
     bool static_robot = false, progress = false, quiet = false;
     double duration_s = 0.0, idle_timeout_s = 5.0, pose_wait_s = 5.0, stats_period_s = 2.0;
     std::size_t max_scans = 0, queue = 4;
+    bool ros2 = false;  ///< --ros2: clouds and odometry from ROS 2 topics, landmarks published there
+    std::string points_topic = "/points", odom_topic = "/odom", robot_name, frame_id = "map";
 };
 
 constexpr int kExitSourceFailed = 1;  // the source broke (corrupt file); outputs written
@@ -44,6 +51,18 @@ constexpr int kExitSourceFailed = 1;  // the source broke (corrupt file); output
 std::unique_ptr<live::LiveSource> makeSource(const LiveOptions& opt,
                                              const pipeline::MapperParams& params,
                                              std::string& input) {
+    if (opt.ros2 && (!opt.follow.empty() || !opt.sensor.empty()))
+        throw std::invalid_argument("give one source: --follow, --sensor or --ros2");
+    if (opt.ros2) {
+        ros2::Ros2SourceOptions p;
+        p.points_topic = opt.points_topic;
+        p.odom_topic = opt.odom_topic;
+        p.T_robot_sensor = ros2::sensorPoseOnRobot(params.sensor);  // no TF: [sensor] pose_*
+        p.static_robot = opt.static_robot;
+        p.pose_wait_s = opt.pose_wait_s;
+        if (!params.sensor.label_filter.empty()) p.sensor_label = params.sensor.label_filter;
+        return ros2::makeRos2Source(p);
+    }
     if (!opt.follow.empty()) {
         input = opt.follow;
         io::checkFollowableRawlog(opt.follow);
@@ -56,7 +75,19 @@ std::unique_ptr<live::LiveSource> makeSource(const LiveOptions& opt,
         p.on_warning = [](const std::string& m) { std::cerr << "stairmap live: warning: " << m << "\n"; };
         return std::make_unique<io::RawlogFollowSource>(opt.follow, p);
     }
-    throw std::runtime_error("no source: give exactly one of --follow FILE.rawlog");
+    if (!opt.sensor.empty()) {
+        input = opt.sensor;
+        sensors::SensorSourceOptions p;
+        p.poses_path = opt.poses;
+        p.static_robot = opt.static_robot;
+        p.pose_wait.max_wait_s = opt.pose_wait_s;
+        p.stamps = opt.sensor_stamps == "sensor" ? sensors::SensorSourceOptions::Stamps::Sensor
+                                                 : sensors::SensorSourceOptions::Stamps::Arrival;
+        p.sensor_label = params.sensor.label_filter;
+        p.T_robot_sensor = sensors::sensorPoseOnRobot(params.sensor);
+        return sensors::makeSensorSource(opt.sensor, p);
+    }
+    throw std::runtime_error("no source: give exactly one of --follow FILE.rawlog, --sensor F.ini, --ros2");
 }
 
 /// landmarks.json rewritten atomically on every change (a run killed outright keeps the latest).
@@ -82,12 +113,14 @@ public:
         if (!opt_.poses.empty() && !std::filesystem::is_regular_file(opt_.poses))
             throw std::runtime_error(opt_.poses + ": no such TUM trajectory file");
         std::unique_ptr<live::LiveSource> source = makeSource(opt_, params_, input_);
+        std::unique_ptr<live::LandmarkListener> publisher = makePublisher();  // before any output
         std::filesystem::create_directories(opt_.out);
         const io::DirectoryLock lock(opt_.out);  // a second run on this folder fails here
         io::removeStaleTempFiles(opt_.out);
         LandmarkFileWriter landmarks_file(outPath("landmarks.json"));
         live::LiveRunner runner(mapper_, *source, runnerParams());
         runner.addListener(landmarks_file);
+        if (publisher) runner.addListener(*publisher);
         runner.setStopCheck([&stop] { return stop.received() != 0; });
         runner.setTickCallback([&](const live::LiveStatus& s) { onTick(s, *source, snapshot); });
         const live::LiveEnd end = runner.run();
@@ -106,6 +139,15 @@ public:
 
 private:
     std::string outPath(const std::string& name) const { return mapout::outputPath(opt_.out, name); }
+
+    /// --ros2: MarkerArray and StaircaseArray on /[robot/]stairmap/... (ros2/Ros2LandmarkPublisher.h).
+    std::unique_ptr<live::LandmarkListener> makePublisher() const {
+        if (!opt_.ros2) return nullptr;
+        ros2::Ros2PublisherOptions p;
+        p.robot_name = opt_.robot_name;
+        p.frame_id = opt_.frame_id;
+        return ros2::makeRos2Publisher(p);
+    }
 
     pipeline::MapperParams loadParams() const {
         input_ = opt_.config;
@@ -177,6 +219,24 @@ void addLiveOptions(CLI::App& cmd, LiveOptions& opt) {
     cmd.add_option("--follow", opt.follow,
                    "a plain (not gzip) rawlog that is still being written: objects are mapped as "
                    "they are completed; the run ends when it stops growing (--idle-timeout)");
+    cmd.add_flag("--ros2", opt.ros2,
+                 "ROS 2 topics (Cyclone DDS, ROS_DOMAIN_ID; loopback unless CYCLONEDDS_URI is set): "
+                 "sensor_msgs/PointCloud2 in the sensor frame of [sensor] pose_*, nav_msgs/Odometry; "
+                 "publishes /stairmap/markers (MarkerArray) and /stairmap/staircases");
+    cmd.add_option("--points-topic", opt.points_topic, "--ros2: PointCloud2 topic (default /points)");
+    cmd.add_option("--odom-topic", opt.odom_topic, "--ros2: Odometry topic (default /odom)");
+    cmd.add_option("--robot-name", opt.robot_name, "--ros2: publish under /NAME/stairmap/...");
+    cmd.add_option("--frame-id", opt.frame_id, "--ros2: frame_id of what is published (default map)");
+    cmd.add_option("--sensor", opt.sensor,
+                   "MRPT sensor drivers configured as for rawlog-grabber (every section but [global] "
+                   "is one sensor, e.g. driver = CVelodyneScanner on live UDP or replaying "
+                   "pcap_input; config/sensors/vlp16_pcap.ini); needs --poses or --static-robot")
+        ->excludes("--follow");
+    cmd.add_option("--sensor-stamps", opt.sensor_stamps,
+                   "--sensor: stamp scans with the computer clock on arrival (arrival, default) or "
+                   "keep the driver's stamps (sensor; MRPT's Velodyne driver switches to GPS time "
+                   "once it has a fix); --poses must use the same clock")
+        ->check(CLI::IsMember({"arrival", "sensor"}));
     cmd.add_option("--poses", opt.poses,
                    "TUM trajectory of the robot, may itself be growing (else "
                    "CObservationRobotPose / odometry in the rawlog)");
@@ -194,7 +254,9 @@ void addLiveOptions(CLI::App& cmd, LiveOptions& opt) {
         ->check(CLI::PositiveNumber);
     cmd.add_option("--pose-wait", opt.pose_wait_s,
                    "--poses: a scan waits for its pose while the TUM file grows; gives up after "
-                   "S seconds without growth [s] (default 5; the scan is then counted, skipped)")
+                   "S seconds without growth [s] (default 5; the scan is then counted, skipped); "
+                   "--sensor: S seconds after the scan arrived; "
+                   "--ros2: a cloud waits this long for odometry at or after its stamp")
         ->check(CLI::NonNegativeNumber);
     cmd.add_option("--queue", opt.queue, "input queue capacity [scans] (default 4)")
         ->check(CLI::Range(1, 1000));
@@ -213,7 +275,8 @@ Command addLiveCommand(CLI::App& app) {
     command.cli = app.add_subcommand(
         "live",
         "Map scans as they arrive from one live source (the same mapper as `map`).\n"
-        "Source (exactly one): --follow FILE.rawlog.\n"
+        "Source (exactly one): --follow FILE.rawlog, --sensor F.ini, or --ros2 (ROS 2 topics;\n"
+        "see README \"ROS 2\").\n"
         "Writes into --out (one run per folder, lock file .stairmap.lock): landmarks.json on\n"
         "every landmark change, stats.json every few seconds (scans/s, lag, dropped scans,\n"
         "latency median/p95, source counters, peak RSS), and landmarks.json, map.bt,\n"

@@ -1,5 +1,5 @@
 // stairmap: one executable, one subcommand per job (detect, sim, eval, map, merge, export, view,
-// annotate, live).
+// annotate, live, play, fleet).
 
 #include <exception>
 #include <new>
@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
                                      addEvalCommand(app), addMapCommand(app),
                                      addMergeCommand(app), addExportCommand(app),
                                      addViewCommand(app), addAnnotateCommand(app),
-                                     addLiveCommand(app)};
+                                     addLiveCommand(app), addPlayCommand(app),
+                                     addFleetCommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -107,7 +107,10 @@ TEST(SimSceneIni, CloudCompressionKeys) {
 }
 
 void expectError(const std::string& content, const std::string& needle) {
-    const auto path = writeIni("bad.ini", content);
+    // One file per test: ctest runs the tests of this file in parallel processes.
+    const auto path = writeIni(
+        std::string("bad_") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".ini",
+        content);
     try {
         loadSimulationConfig(path);
         FAIL() << "expected an error containing " << needle;
