@@ -52,12 +52,17 @@ struct DetectorParams {
     double max_step_height_m = 0.30;  ///< [m] condition 1, maximum rise
     double min_step_depth_m = 0.15;   ///< [m] condition 2, minimum run
     double max_step_depth_m = 0.45;   ///< [m] condition 2, maximum run
-    double min_slope_deg = 25.0;      ///< [deg] condition 3, minimum slope atan(h/d)
+    /// [deg] condition 3, minimum slope atan(h/d). The paper uses 25; shallow entrance flights
+    /// (0.11 m rises on 0.30 m runs: 20 deg) are real stairs, so 20 is the default. Lower is not
+    /// safe: a LiDAR's rings on a steep ramp are evenly spaced level lines whose slope is the
+    /// ramp's (datasets/clouds/ramp_steep_0 becomes two staircases at 12 deg).
+    double min_slope_deg = 20.0;
     double max_slope_deg = 60.0;      ///< [deg] condition 3, maximum slope
-    /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; spiral stairs
-    /// with wedge treads turn 15-25 deg per step, so 25 is the default (rise/run/slope and
-    /// "no line in between" still reject the negatives).
-    double max_parallel_deg = 25.0;
+    /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; a spiral's
+    /// wedge treads turn run / mid radius per step: 15-25 deg on wide spirals, up to 40 deg and more
+    /// on narrow ones (0.3 m run at 0.45 m mid radius: 38 deg), so 45 is the default (rise, run,
+    /// slope and "no line in between" still reject the negatives).
+    double max_parallel_deg = 45.0;
     /// [m] sparse-cloud mode. Above its own height a LiDAR sees no tread, only the riser below
     /// each nosing, and the highest hit there reads up to one beam spacing low (2 deg: 7 cm at
     /// 2 m). With a tolerance > 0, conditions 1 and 3 accept a pair whose rise is off by up to this

@@ -8,6 +8,7 @@
 #include "core/FloorEstimation.h"
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
+#include "core/MissingNosings.h"
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
 #include "core/StairPairExplain.h"
@@ -162,6 +163,7 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
             edges.push_back(lines[idx]);
             if (!up) edges.back().z = 2 * floor_z - edges.back().z;
         }
+        fillMissingNosings(edges);  // edges the search stepped over
         // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
         if (p.edge_height_tolerance_m > 0) raiseLowEdges(edges, kRiserHitMinDrop);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);

@@ -10,6 +10,9 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 constexpr double kBetweenDz = 0.02;  ///< [m] a blocking line is this far from both edges in z ...
+/// [m] an edge across one unseen nosing must be twice the chain's rise within this (or the
+/// sparse-cloud height tolerance, if larger)
+constexpr double kGapRiseTolerance = 0.03;
 
 /// Common extent [lo, hi] of two segments along u.
 std::pair<double, double> commonExtent(const LineSegment& a, const LineSegment& b,
@@ -37,30 +40,68 @@ std::pair<int, int> nextStepRange(const std::vector<LineSegment>& lines, double 
 struct Candidate {
     std::vector<int> steps;
     Eigen::Vector2d normal;
+    double rise = 0.0;  ///< [m] rise per nosing of the latest pair
 };
 
-/// Algorithm 1, extension: adds, step by step, the next edge that forms a stair with the last one
-/// (most overlapping among the valid ones, same direction, nothing in between).
+/// Definition 1 for a pair of edges `steps` nosings apart (1 = consecutive): rise and run bounds
+/// scaled by the number of steps, the chain's own rise within the height tolerance.
+std::optional<StairPair> checkStepsApart(const LineSegment& lower, const LineSegment& upper,
+                                         int steps, double chain_rise, const DetectorParams& p) {
+    if (steps == 1) return checkStairPair(lower, upper, p);
+    DetectorParams q = p;
+    const double tol = std::max(p.edge_height_tolerance_m, kGapRiseTolerance);
+    q.min_step_height_m = steps * chain_rise - tol;
+    q.max_step_height_m = steps * chain_rise + tol;
+    q.edge_height_tolerance_m = 0.0;
+    q.min_step_depth_m = steps * p.min_step_depth_m;
+    q.max_step_depth_m = steps * p.max_step_depth_m;
+    return checkStairPair(lower, upper, q);
+}
+
+/// The next edge `steps` nosings above the chain's last one: the most overlapping valid one (same
+/// direction, nothing in between), or -1.
+int nextEdge(const std::vector<LineSegment>& lines, const std::vector<char>& used,
+             const DetectorParams& p, const Candidate& c, int steps) {
+    const int last = c.steps.back();
+    const double chain_rise = c.rise;
+    const double tol = std::max(p.edge_height_tolerance_m, kGapRiseTolerance) + 1e-9;
+    const auto [b, e] =
+        steps == 1 ? nextStepRange(lines, lines[last].z, p)
+                   : zRange(lines, lines[last].z + steps * chain_rise - tol,
+                            lines[last].z + steps * chain_rise + tol);
+    int best = -1;
+    double best_overlap = 0.0;
+    for (int j = b; j < e; ++j) {
+        if (used[j] || std::find(c.steps.begin(), c.steps.end(), j) != c.steps.end()) continue;
+        const auto pair = checkStepsApart(lines[last], lines[j], steps, chain_rise, p);
+        if (!pair || pair->normal.dot(c.normal) < std::cos(p.max_parallel_deg * kDegToRad))
+            continue;
+        // Across an unseen nosing, what is left of it (a broken or short line) is no obstacle.
+        const double expected_z = steps == 1 ? std::numeric_limits<double>::quiet_NaN()
+                                             : 0.5 * (lines[last].z + lines[j].z);
+        if (pair->overlap <= best_overlap || hasLineBetween(lines, last, j, *pair, p, expected_z))
+            continue;
+        best = j;
+        best_overlap = pair->overlap;
+    }
+    return best;
+}
+
+/// Algorithm 1, extension: adds, step by step, the next edge that forms a stair with the last one.
+/// When none does, an edge two nosings higher may continue the chain (one nosing unseen: its
+/// line too short or broken in the sparse rows of a far or oblique view); the caller fills the gap.
 void extend(const std::vector<LineSegment>& lines, const std::vector<char>& used,
             const DetectorParams& p, Candidate& c) {
     for (;;) {
         const int last = c.steps.back();
-        const auto [b, e] = nextStepRange(lines, lines[last].z, p);
-        int best = -1;
-        double best_overlap = 0.0;
-        for (int j = b; j < e; ++j) {
-            if (used[j] || std::find(c.steps.begin(), c.steps.end(), j) != c.steps.end()) continue;
-            const auto pair = checkStairPair(lines[last], lines[j], p);
-            if (!pair || pair->normal.dot(c.normal) < std::cos(p.max_parallel_deg * kDegToRad))
-                continue;
-            if (pair->overlap <= best_overlap || hasLineBetween(lines, last, j, *pair, p)) continue;
-            best = j;
-            best_overlap = pair->overlap;
-        }
+        int steps = 1;
+        int best = nextEdge(lines, used, p, c, 1);
+        if (best < 0) best = nextEdge(lines, used, p, c, steps = 2);
         if (best < 0) return;
-        c.steps.push_back(best);
         // Follow a turning (spiral) flight: compare the next pair with the latest direction.
-        c.normal = checkStairPair(lines[last], lines[best], p)->normal;
+        c.normal = checkStepsApart(lines[last], lines[best], steps, c.rise, p)->normal;
+        c.rise = (lines[best].z - lines[last].z) / steps;
+        c.steps.push_back(best);
     }
 }
 
@@ -77,7 +118,7 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
             if (used[j]) continue;
             const auto pair = checkStairPair(lines[i], lines[j], p);
             if (!pair || hasLineBetween(lines, i, j, *pair, p)) continue;
-            Candidate c{{i, j}, pair->normal};
+            Candidate c{{i, j}, pair->normal, pair->rise};
             extend(lines, used, p, c);
             if (c.steps.size() > best.steps.size()) best = c;
         }
@@ -116,7 +157,7 @@ std::optional<StairPair> checkStairPair(const LineSegment& lower, const LineSegm
 }
 
 bool hasLineBetween(const std::vector<LineSegment>& lines, int lower, int upper,
-                    const StairPair& pair, const DetectorParams& p) {
+                    const StairPair& pair, const DetectorParams& p, double expected_z) {
     const LineSegment& a = lines[lower];
     const LineSegment& b = lines[upper];
     const Eigen::Vector2d u = a.direction();
@@ -129,6 +170,7 @@ bool hasLineBetween(const std::vector<LineSegment>& lines, int lower, int upper,
     for (int m = mb; m < me; ++m) {
         if (m == lower || m == upper) continue;
         const LineSegment& l = lines[m];
+        if (std::abs(l.z - expected_z) < dz) continue;  // false for NaN
         if (lineAngle(l, a) > 2 * p.max_parallel_deg * kDegToRad) continue;
         const auto el = extentAlong(l, u);
         const double cover = std::min(hi, el.second) - std::max(lo, el.first);

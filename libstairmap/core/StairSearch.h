@@ -3,6 +3,7 @@
 // and Algorithm 1 (initialise with a pair near the floor, extend upwards), repeated on the remaining
 // lines to find several staircases per direction.
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -25,9 +26,12 @@ std::optional<StairPair> checkStairPair(const LineSegment& lower, const LineSegm
                                         const DetectorParams& params);
 
 /// Definition 1, condition 5: does a line of `sorted_lines` (sorted by z) lie strictly between the
-/// two edges, covering at least between_overlap_ratio of their common extent?
+/// two edges, covering at least between_overlap_ratio of their common extent? Lines within the
+/// height tolerance of `expected_z` (an unseen nosing's height between edges two steps apart;
+/// NaN = none) do not count.
 bool hasLineBetween(const std::vector<LineSegment>& sorted_lines, int lower, int upper,
-                    const StairPair& pair, const DetectorParams& params);
+                    const StairPair& pair, const DetectorParams& params,
+                    double expected_z = std::numeric_limits<double>::quiet_NaN());
 
 /// Algorithm 1 repeated: staircases found in `sorted_lines` (sorted by z, z measured upwards away
 /// from the floor at `floor_z`). Each result lists line indices from the floor outward.

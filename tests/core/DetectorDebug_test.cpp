@@ -114,13 +114,13 @@ TEST(DetectorDebug, TooHighRiseIsRejectedWithItsRule) {
 }
 
 TEST(StairPairExplain, NamesTheFailedRule) {
-    const DetectorParams p;  // rise 0.11-0.30 (+-0.04), run 0.15-0.45, parallel 25 deg
+    const DetectorParams p;  // rise 0.11-0.30 (+-0.04), run 0.15-0.45, parallel 45 deg
     const LineSegment low = segment(1.0, 0.0, 0.0, M_PI / 2, 1.0);
     EXPECT_EQ(explainStairPair(low, segment(1.3, 0.0, 0.17, M_PI / 2, 1.0), p), "");
     EXPECT_EQ(explainStairPair(low, segment(1.3, 0.0, 0.40, M_PI / 2, 1.0), p), "rise 0.40 > 0.34 m");
     EXPECT_EQ(explainStairPair(low, segment(1.3, 0.0, 0.05, M_PI / 2, 1.0), p), "rise 0.05 < 0.07 m");
-    EXPECT_EQ(explainStairPair(low, segment(1.3, 0.0, 0.17, M_PI / 2 + 40 * kDeg, 1.0), p),
-              "not parallel: 40\u00b0 > 25\u00b0");
+    EXPECT_EQ(explainStairPair(low, segment(1.3, 0.0, 0.17, M_PI / 2 + 50 * kDeg, 1.0), p),
+              "not parallel: 50\u00b0 > 45\u00b0");
     EXPECT_EQ(explainStairPair(low, segment(1.6, 0.0, 0.17, M_PI / 2, 1.0), p), "run 0.60 > 0.45 m");
     EXPECT_EQ(explainStairPair(low, segment(1.3, 3.0, 0.17, M_PI / 2, 1.0), p).rfind("overlap", 0), 0u);
     EXPECT_EQ(tooFewSteps(2, 3), "2 steps < 3");

@@ -20,9 +20,9 @@ TEST(DetectorParams, DefaultsAreValidAndFollowThePaper) {
     EXPECT_DOUBLE_EQ(p.max_step_height_m, 0.30);
     EXPECT_DOUBLE_EQ(p.min_step_depth_m, 0.15);
     EXPECT_DOUBLE_EQ(p.max_step_depth_m, 0.45);
-    EXPECT_DOUBLE_EQ(p.min_slope_deg, 25.0);
+    EXPECT_DOUBLE_EQ(p.min_slope_deg, 20.0);  // paper: 25; shallow entrance flights (issue 10)
     EXPECT_DOUBLE_EQ(p.max_slope_deg, 60.0);
-    EXPECT_DOUBLE_EQ(p.max_parallel_deg, 25.0);  // paper: 10 (see DetectorParams.h)
+    EXPECT_DOUBLE_EQ(p.max_parallel_deg, 45.0);  // paper: 10; narrow spirals (DetectorParams.h)
     EXPECT_EQ(p.min_steps, 4);
     EXPECT_DOUBLE_EQ(p.init_height_factor, 3.5);  // 2.5 missed flights with hidden first steps
 }

@@ -1,0 +1,110 @@
+// Detector time per cloud on the randomised benchmark's clouds (issue 10, item 3): level and
+// pitched LiDARs, depth cameras and elevation maps, stairs and negatives, 10k-260k points, ranges
+// to 25 m, nothing cropped away beyond the detector's own max_range_m. Reports the median and p95
+// of the per-cloud CPU time (each cloud detected `kRuns` times, its fastest run kept: the machine
+// is shared) and how the time grows with size: a least-squares fit t = a + b * points.
+// Clouds: every r*.pcd.gz with its .gt.json (floor from the truth) in $STAIRMAP_BENCH_RANDOM_DIR
+// (e.g. a `make eval` set, build/eval/dev-seed1001-n300-v1); without it, the first
+// $STAIRMAP_BENCH_RANDOM_N (default 24) scenes of seed 1001 are drawn in-process (slow set-up,
+// about 2.5 s per scene). Target: median <= 2.3 ms (0.25x the authors' 9 ms median).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/StairDetector.h"
+#include "io/cloud/CloudFile.h"
+#include "io/json/GroundTruthJson.h"
+#include "sim/RandomCloud.h"
+
+namespace {
+
+constexpr int kRuns = 3;
+
+struct Sample {
+    stairmap::PointCloud cloud;
+    double floor_z = 0.0;
+};
+
+std::vector<Sample> loadDir(const std::string& dir) {
+    std::vector<std::string> paths;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        const std::string p = e.path().string();
+        if (p.size() > 7 && p.compare(p.size() - 7, 7, ".pcd.gz") == 0) paths.push_back(p);
+    }
+    std::sort(paths.begin(), paths.end());
+    std::vector<Sample> out;
+    for (const auto& p : paths) {
+        const auto truth = stairmap::io::readGroundTruthFile(p.substr(0, p.size() - 7) + ".gt.json");
+        out.push_back({stairmap::io::readCloudFile(p), truth.observer_floor_z.value_or(-0.5)});
+    }
+    return out;
+}
+
+const std::vector<Sample>& samples() {
+    static const std::vector<Sample> s = [] {
+        if (const char* dir = std::getenv("STAIRMAP_BENCH_RANDOM_DIR")) return loadDir(dir);
+        const char* n_env = std::getenv("STAIRMAP_BENCH_RANDOM_N");
+        const int n = n_env ? std::atoi(n_env) : 24;
+        std::vector<Sample> out;
+        for (int i = 0; i < n; ++i) {
+            auto rc = stairmap::sim::makeRandomCloud(1001, i);
+            out.push_back({std::move(rc.cloud), rc.truth.observer_floor_z.value_or(-0.5)});
+        }
+        return out;
+    }();
+    return s;
+}
+
+double cpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
+}
+
+double quantile(std::vector<double> v, double q) {
+    const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+    std::nth_element(v.begin(), v.begin() + k, v.end());
+    return v[static_cast<std::size_t>(k)];
+}
+
+void BM_DetectRandomSet(benchmark::State& state) {
+    const auto& set = samples();
+    const stairmap::StairDetector detector;
+    std::vector<double> ms(set.size());
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            double best = 1e30;
+            for (int r = 0; r < kRuns; ++r) {
+                const double t0 = cpuMs();
+                benchmark::DoNotOptimize(detector.detect(set[i].cloud, set[i].floor_z));
+                best = std::min(best, cpuMs() - t0);
+            }
+            ms[i] = best;
+        }
+    }
+    // Growth with size: least squares t = a + b * points.
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        const double x = 1e-3 * static_cast<double>(set[i].cloud.size());
+        n += 1, sx += x, sy += ms[i], sxx += x * x, sxy += x * ms[i];
+    }
+    const double b = (n * sxy - sx * sy) / std::max(1e-9, n * sxx - sx * sx);
+    state.counters["clouds"] = n;
+    state.counters["median_ms"] = set.empty() ? 0.0 : quantile(ms, 0.5);
+    state.counters["p95_ms"] = set.empty() ? 0.0 : quantile(ms, 0.95);
+    state.counters["max_ms"] = set.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end());
+    state.counters["ms_at_0_pts"] = n > 0 ? (sy - b * sx) / n : 0.0;
+    state.counters["ms_per_10k_pts"] = 10.0 * b;
+}
+BENCHMARK(BM_DetectRandomSet)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
