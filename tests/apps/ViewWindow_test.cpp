@@ -144,7 +144,11 @@ TEST(ViewWindow, StepsWithKeysAndShowsTheLandmarks) {
                   data + "poses.tum", "--config",
                   std::string(STAIRMAP_SOURCE_DIR) + "/config/sim_legged_vlp16.ini", "--script",
                   dir + "/script.txt"},
-                 {"DISPLAY=" + display}, dir + "/stdout.txt", dir + "/stderr.txt");
+                 // Under ASan: 112 bytes leak in a GL/X11 module that is unloaded before exit (LSan
+                 // shows "<unknown module>", so no suppression can name it); leak checking is off
+                 // for this child only. Placed first, this entry wins over the inherited one.
+                 {"DISPLAY=" + display, "ASAN_OPTIONS=detect_leaks=0"}, dir + "/stdout.txt",
+                 dir + "/stderr.txt");
     ASSERT_TRUE(viewer.started());
     const std::string find = "xdotool search --name 'stairmap view' >/dev/null 2>&1";
     ASSERT_TRUE(waitFor([&] { return sh(display, find) == 0; }, 60s)) << "no window appeared";
