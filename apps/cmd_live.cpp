@@ -13,6 +13,7 @@
 #include <string>
 
 #include "Commands.h"
+#include "RunInputs.h"
 #include "LiveReport.h"
 #include "io/config/MapperConfig.h"
 #include "io/follow/RawlogFollowSource.h"
@@ -149,15 +150,10 @@ private:
         return ros2::makeRos2Publisher(p);
     }
 
-    pipeline::MapperParams loadParams() const {
-        input_ = opt_.config;
-        return opt_.config.empty() ? pipeline::MapperParams{} : io::loadMapperParams(opt_.config);
-    }
+    pipeline::MapperParams loadParams() const { return loadRunParams(opt_.config, input_); }
 
     LandmarkMap initialLandmarks() const {
-        if (opt_.map_in.empty()) return LandmarkMap(params_.landmarks);
-        input_ = opt_.map_in;
-        return io::loadLandmarkMap(opt_.map_in, params_.landmarks);
+        return loadRunLandmarks(opt_.map_in, params_.landmarks, input_);
     }
 
     live::LiveRunnerParams runnerParams() const {

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "Commands.h"
+#include "RunInputs.h"
 #include "MapReport.h"
 #include "io/config/MapperConfig.h"
 #include "io/json/LandmarkJson.h"
@@ -116,15 +117,10 @@ class MapRun {
         return mapout::outputPath(opt_.out, name);
     }
 
-    pipeline::MapperParams loadParams() const {
-        input_ = opt_.config;
-        return opt_.config.empty() ? pipeline::MapperParams{} : io::loadMapperParams(opt_.config);
-    }
+    pipeline::MapperParams loadParams() const { return loadRunParams(opt_.config, input_); }
 
     LandmarkMap initialLandmarks() const {
-        if (opt_.map_in.empty()) return LandmarkMap(params_.landmarks);
-        input_ = opt_.map_in;
-        return io::loadLandmarkMap(opt_.map_in, params_.landmarks);
+        return loadRunLandmarks(opt_.map_in, params_.landmarks, input_);
     }
 
     io::RawlogSourceParams sourceParams() const {
