@@ -2,11 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/StaircaseGeometry.h"
 
 namespace stairmap {
 namespace {
+
+/// Union of the lateral extents of a flight's edges [m].
+std::pair<double, double> flightExtent(const Staircase& s, const Eigen::Vector2d& lateral) {
+    std::pair<double, double> ext{std::numeric_limits<double>::infinity(),
+                                  -std::numeric_limits<double>::infinity()};
+    for (const StairEdge& e : s.steps) {
+        const auto x = lateralExtent(e, lateral);
+        ext = {std::min(ext.first, x.first), std::max(ext.second, x.second)};
+    }
+    return ext;
+}
 
 /// True when `far` starts beyond `near`'s last edge as a continuation of the same flight.
 bool continues(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
@@ -23,10 +35,11 @@ bool continues(const Staircase& near, const Staircase& far, const FlightJoinPara
     if (climb < -p.height_tolerance_m ||
         climb > p.max_gap_runs * near.step_height + p.height_tolerance_m)
         return false;
+    // Over the same width: the flights' whole lateral extents, as a facing edge may be a piece.
     const Eigen::Vector2d lateral(-h.y(), h.x());
-    const auto a = lateralExtent(last, lateral), b = lateralExtent(first, lateral);
+    const auto a = flightExtent(near, lateral), b = flightExtent(far, lateral);
     const double common = std::min(a.second, b.second) - std::max(a.first, b.first);
-    return common >= p.min_lateral_overlap * std::min(last.length(), first.length());
+    return common >= p.min_lateral_overlap * std::min(a.second - a.first, b.second - b.first);
 }
 
 /// True when far's edges are near's next steps: one run apart each and on its nosing line.

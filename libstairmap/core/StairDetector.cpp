@@ -9,12 +9,12 @@
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
 #include "core/MissingNosings.h"
+#include "core/OverlappingFlights.h"
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
 #include "core/StairPairExplain.h"
 #include "core/StairSearch.h"
 #include "core/StaircaseGeometry.h"
-#include "core/StaircaseMerge.h"
 #include "core/TopView.h"
 
 namespace stairmap {
@@ -177,26 +177,6 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
     }
 }
 
-/// One flight whose nosings were each split in two (occlusion, a gap in the points) can come out of
-/// the search as two side-by-side chains at the same heights; Definition 2 (collinear edges,
-/// lateral gap <= 0.3 m) recognises them and they are fused into one staircase.
-void mergeSplitFlights(std::vector<Staircase>& found, std::size_t first) {
-    for (std::size_t i = first; i < found.size(); ++i) {
-        for (std::size_t j = i + 1; j < found.size();) {
-            auto merged = found[i].direction == found[j].direction
-                              ? mergeStaircases(found[i], found[j])
-                              : std::nullopt;
-            if (!merged) {
-                ++j;
-                continue;
-            }
-            found[i] = *merged;
-            found.erase(found.begin() + static_cast<std::ptrdiff_t>(j));
-            j = i + 1;
-        }
-    }
-}
-
 }  // namespace
 
 StairDetector::StairDetector(const DetectorParams& params) : params_(params) { params_.validate(); }
@@ -232,7 +212,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (params_.detect_descending)
         detectDirection(cells, StairDirection::Descending, floor, params_, result.staircases,
                         debug);
-    mergeSplitFlights(result.staircases, 0);
+    mergeOverlappingFlights(result.staircases);  // Algorithm 2 on the detector's own chains
     FlightJoinParams jp;
     jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
     jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);

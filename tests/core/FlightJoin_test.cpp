@@ -45,6 +45,19 @@ TEST(FlightJoin, ACorruptedContinuationIsDroppedAndTheAnchoredChainKept) {
     EXPECT_NEAR(found[0].steps.front().centre().z(), -0.33, 1e-9);
 }
 
+TEST(FlightJoin, AContinuationWhoseFacingEdgeIsAPieceIsStillRecognised) {
+    // the far chain's first edge is a 0.4 m piece mostly beside the near chain's last edge (a
+    // broken nosing); the far chain is 9 cm too high, so it is dropped, not appended
+    Staircase far = flight(4, 8, 0.0, 1.5, 0.09);
+    far.steps.front().start.y() = -0.5;
+    far.steps.front().end.y() = -0.9;
+    estimateGeometry(far);
+    std::vector<Staircase> found = {flight(0, 3), far};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].steps.size(), 4u);
+}
+
 TEST(FlightJoin, SeparateFlightsStaySeparate) {
     // side by side (no lateral overlap), beyond a 1.5 m landing, and one descending
     std::vector<Staircase> found = {flight(0, 4), flight(0, 4, 2.0), flight(5, 8, 0.0, 3.0)};
