@@ -44,6 +44,7 @@ PairErrors pairErrors(const Staircase& d, const StaircaseTruth& g) {
     e.height_cm = 100.0 * std::abs(d.step_height - g.rise_m);
     e.depth_cm = 100.0 * std::abs(d.step_depth - g.run_m);
     e.width_cm = 100.0 * std::abs(d.step_width - g.width_m);
+    e.both_sides_bounded = d.left_side != StairSide::Unseen && d.right_side != StairSide::Unseen;
     const NosingSegment& first =
         d.direction == StairDirection::Ascending ? g.nosings.front() : g.nosings.back();
     e.location_cm = 100.0 * distanceToSegment(first, d.location);
@@ -123,6 +124,10 @@ void accumulate(KindSummary& row, const SampleOutcome& s, const std::optional<do
         row.mae_depth_cm += e.depth_cm;
         row.mae_width_cm += e.width_cm;
         row.mae_location_cm += e.location_cm;
+        if (e.both_sides_bounded) {
+            ++row.bounded;
+            row.mae_width_bounded_cm += e.width_cm;
+        }
     }
     if (time_ms) {
         ++timed;
@@ -137,6 +142,7 @@ void finish(KindSummary& row, int timed, double time_sum) {
         row.mae_width_cm /= row.detections;
         row.mae_location_cm /= row.detections;
     }
+    if (row.bounded > 0) row.mae_width_bounded_cm /= row.bounded;
     if (timed > 0) row.mean_time_ms = time_sum / timed;
 }
 }  // namespace

@@ -46,6 +46,8 @@ struct PairErrors {
     double depth_cm = 0.0;
     double width_cm = 0.0;
     double location_cm = 0.0;
+    /// the detection marks both sides bounded (StairSide Wall or Open): its width is complete
+    bool both_sides_bounded = false;
 };
 
 struct SampleOutcome {
@@ -69,6 +71,8 @@ struct KindSummary {
     double mae_depth_cm = 0.0;
     double mae_width_cm = 0.0;
     double mae_location_cm = 0.0;
+    int bounded = 0;                  ///< matched detections with both sides bounded
+    double mae_width_bounded_cm = 0.0;  ///< width MAE over those (0 when none)
     std::optional<double> mean_time_ms;  ///< mean detector time per sample (Table I)
 };
 

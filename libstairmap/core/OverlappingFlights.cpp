@@ -20,18 +20,6 @@ MergeParams anyGap() {
     return m;
 }
 
-/// Unit XY normal of edge k pointing outward along the flight (towards the next step).
-Eigen::Vector2d outwardNormal(const Staircase& s, std::size_t k) {
-    const Eigen::Vector2d d = (s.steps[k].end - s.steps[k].start).head<2>();
-    Eigen::Vector2d n(-d.y(), d.x());
-    if (n.norm() < 1e-9) n = Eigen::Vector2d(std::cos(s.heading_rad), std::sin(s.heading_rad));
-    n.normalize();
-    const std::size_t lo = k > 0 ? k - 1 : k, hi = k + 1 < s.steps.size() ? k + 1 : k;
-    const Eigen::Vector2d flow = (s.steps[hi].centre() - s.steps[lo].centre()).head<2>();
-    const Eigen::Vector2d heading(std::cos(s.heading_rad), std::sin(s.heading_rad));
-    return n.dot(lo == hi ? heading : flow) >= 0 ? n : Eigen::Vector2d(-n);
-}
-
 /// Index of a's step nearest in height to z within tol, or -1.
 int levelOf(const Staircase& a, double z, double tol) {
     int best = -1;

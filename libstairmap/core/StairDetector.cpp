@@ -14,6 +14,7 @@
 #include "core/RowSegmentation.h"
 #include "core/StairPairExplain.h"
 #include "core/StairSearch.h"
+#include "core/StepExtent.h"
 #include "core/StaircaseGeometry.h"
 #include "core/TopView.h"
 
@@ -217,6 +218,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
     jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);
     joinContinuedFlights(result.staircases, jp);
+    for (Staircase& s : result.staircases) measureStepExtents(cloud_robot, s);  // widths, sides
     if (debug) debug->accepted = result.staircases;
     return result;
 }

@@ -31,4 +31,23 @@ Eigen::Vector2d StairEdge::rhoTheta() const {
     return {rho, std::atan2(n.y(), n.x())};
 }
 
+const char* stairSideName(StairSide side) {
+    switch (side) {
+        case StairSide::Wall: return "wall";
+        case StairSide::Open: return "open";
+        case StairSide::Unseen: break;
+    }
+    return "unseen";
+}
+
+bool stairSideFromName(const std::string& name, StairSide& side) {
+    for (StairSide s : {StairSide::Unseen, StairSide::Wall, StairSide::Open}) {
+        if (name == stairSideName(s)) {
+            side = s;
+            return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace stairmap

@@ -3,6 +3,7 @@
 // plus the geometry estimated from them.
 
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 namespace stairmap {
@@ -31,6 +32,11 @@ struct StairEdge {
 
 enum class StairDirection { Ascending, Descending };
 
+/// What ends the treads on one side of a flight (core/StepExtent.h): a wall (points rising above
+/// the tread just beyond its end), an open edge that was seen (floor or a drop visible beyond the
+/// end), or unseen (the view does not cover beyond the end, so the width may be short there).
+enum class StairSide { Unseen, Wall, Open };
+
 /// A detected staircase. `steps` are ordered from the floor the observer stands on outward
 /// (ascending: bottom to top; descending: top to bottom).
 struct Staircase {
@@ -44,6 +50,15 @@ struct Staircase {
     /// Direction of travel along the flight [rad], counter-clockwise from +x: up the stairs for an
     /// ascending staircase, down them for a descending one.
     double heading_rad = 0.0;
+    /// Sides, looking along heading_rad (left = the edges' `start` side). A width is complete
+    /// when both sides are bounded (Wall or Open).
+    StairSide left_side = StairSide::Unseen;
+    StairSide right_side = StairSide::Unseen;
 };
+
+/// "wall", "open", "unseen" (JSON values).
+const char* stairSideName(StairSide side);
+/// Inverse of stairSideName; false (and `side` unchanged) for another string.
+bool stairSideFromName(const std::string& name, StairSide& side);
 
 }  // namespace stairmap

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace stairmap {
@@ -102,7 +103,10 @@ std::optional<Staircase> canonicalStaircase(const Staircase& staircase) {
     if (staircase.steps.empty() || !isFinite(staircase)) return std::nullopt;
     Staircase s = staircase;
     // A descending staircase is seen from the top: its heading points downhill.
-    if (s.direction == StairDirection::Descending) s.heading_rad += M_PI;
+    if (s.direction == StairDirection::Descending) {
+        s.heading_rad += M_PI;
+        std::swap(s.left_side, s.right_side);  // left/right are taken looking along the heading
+    }
     s.heading_rad = std::atan2(std::sin(s.heading_rad), std::cos(s.heading_rad));
     std::stable_sort(s.steps.begin(), s.steps.end(), [](const StairEdge& a, const StairEdge& b) {
         return a.centre().z() < b.centre().z();

@@ -3,6 +3,7 @@
 // the paper divides sums of k-1 differences by 2k; here rise and run are least-squares slopes of the
 // edge heights / cumulative edge spacings against the step index, which uses every edge).
 
+#include <cstddef>
 #include <utility>
 
 #include "core/Staircase.h"
@@ -28,5 +29,9 @@ double edgeSpacingXY(const StairEdge& a, const StairEdge& b);
 
 /// Extent [lo, hi] of an edge's XY end points projected on the unit direction `lateral` [m].
 std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral);
+
+/// Unit XY normal of steps[k] pointing outward along the flight (towards the next step; for a
+/// turning flight, the step's own normal). Precondition: k < steps.size().
+Eigen::Vector2d outwardNormal(const Staircase& s, std::size_t k);
 
 }  // namespace stairmap

@@ -76,6 +76,9 @@ std::optional<WeightedStaircase> pairAndFuse(const WeightedStaircase& a, const W
                                         b.step_observations[j], a.stairs.heading_rad, p);
         out.step_observations[i] += b.step_observations[j];
     }
+    // A side seen bounded (wall / open) by either detection stays bounded; a conflict keeps a's.
+    if (out.stairs.left_side == StairSide::Unseen) out.stairs.left_side = b.stairs.left_side;
+    if (out.stairs.right_side == StairSide::Unseen) out.stairs.right_side = b.stairs.right_side;
     return orderAndCollapse(out, p);
 }
 

@@ -190,5 +190,31 @@ TEST(Evaluation, EmptyInputAndBadParams) {
     EXPECT_THROW(evaluate({}, bad), std::invalid_argument);
 }
 
+TEST(Evaluation, WidthOfFlightsWithBothSidesBoundedIsReportedSeparately) {
+    // two ascending samples: one bounded (wall / open), width off by 4 cm; one with an unseen
+    // side, width off by 30 cm
+    std::vector<EvaluationSample> samples(2);
+    for (int i = 0; i < 2; ++i) {
+        samples[i].name = "s" + std::to_string(i);
+        samples[i].kind = "ascending";
+        samples[i].truth = robotTruth({flight(StairDirection::Ascending)});
+        Staircase d = detectionOn(samples[i].truth.staircases[0], StairDirection::Ascending, 0.5);
+        d.step_height = 0.2;
+        d.step_depth = 0.3;
+        d.step_width = i == 0 ? 1.04 : 0.70;
+        d.left_side = i == 0 ? StairSide::Wall : StairSide::Unseen;
+        d.right_side = StairSide::Open;
+        samples[i].detections = {d};
+    }
+    const EvaluationReport r = evaluate(samples);
+    ASSERT_EQ(r.kinds.size(), 1u);
+    EXPECT_EQ(r.total.detections, 2);
+    EXPECT_EQ(r.total.bounded, 1);
+    EXPECT_NEAR(r.total.mae_width_bounded_cm, 4.0, 1e-6);
+    EXPECT_NEAR(r.total.mae_width_cm, 17.0, 1e-6);
+    EXPECT_TRUE(r.samples[0].errors.at(0).both_sides_bounded);
+    EXPECT_FALSE(r.samples[1].errors.at(0).both_sides_bounded);
+}
+
 }  // namespace
 }  // namespace stairmap

@@ -218,5 +218,23 @@ TEST(StaircaseMerge, BadInputThrowsNamingTheProblem) {
                  std::invalid_argument);
 }
 
+TEST(StaircaseMerge, SidesSurviveMergingAndFollowTheCanonicalHeading) {
+    const FlightTruth truth;
+    Staircase a = exact(truth, 0, 4), b = exact(truth, 2, 7);
+    a.right_side = StairSide::Open;  // a saw the right side, b the left one
+    b.left_side = StairSide::Wall;
+    const auto m = mergeStaircases(a, b);
+    ASSERT_TRUE(m.has_value());
+    EXPECT_EQ(m->left_side, StairSide::Wall);
+    EXPECT_EQ(m->right_side, StairSide::Open);
+    // seen from above, left and right are taken looking downhill: canonical (uphill) swaps them
+    Staircase down = exact(truth, 0, 4, true);
+    down.left_side = StairSide::Wall;
+    down.right_side = StairSide::Open;
+    const Staircase c = *canonicalStaircase(down);
+    EXPECT_EQ(c.left_side, StairSide::Open);
+    EXPECT_EQ(c.right_side, StairSide::Wall);
+}
+
 }  // namespace
 }  // namespace stairmap

@@ -18,6 +18,8 @@ json rowJson(const KindSummary& r) {
             {"mae_depth_cm", r.mae_depth_cm},
             {"mae_width_cm", r.mae_width_cm},
             {"mae_location_cm", r.mae_location_cm},
+            {"bounded", r.bounded},
+            {"mae_width_bounded_cm", r.mae_width_bounded_cm},
             {"mean_time_ms", r.mean_time_ms ? json(*r.mean_time_ms) : json(nullptr)}};
 }
 
@@ -27,7 +29,8 @@ json sampleJson(const SampleOutcome& s) {
         errors.push_back({{"height_cm", e.height_cm},
                           {"depth_cm", e.depth_cm},
                           {"width_cm", e.width_cm},
-                          {"location_cm", e.location_cm}});
+                          {"location_cm", e.location_cm},
+                          {"both_sides_bounded", e.both_sides_bounded}});
     }
     return {{"name", s.name},       {"kind", s.kind},
             {"expected", s.expected}, {"matched", s.matched},
@@ -46,9 +49,12 @@ std::string rowText(const KindSummary& r) {
     char time[32];
     if (r.mean_time_ms) std::snprintf(time, sizeof(time), "%9.1f", *r.mean_time_ms);
     else std::snprintf(time, sizeof(time), "%9s", "-");
-    char line[256];
-    std::snprintf(line, sizeof(line), "%-12s %6d %7d %9d %6d  %s %s\n", r.kind.c_str(), r.clouds,
-                  r.samples, r.detections, r.false_positives, mae, time);
+    char bounded[48];
+    if (r.bounded > 0) std::snprintf(bounded, sizeof(bounded), "%8d %9.2f", r.bounded, r.mae_width_bounded_cm);
+    else std::snprintf(bounded, sizeof(bounded), "%8d %9s", 0, "-");
+    char line[320];
+    std::snprintf(line, sizeof(line), "%-12s %6d %7d %9d %6d  %s %s %s\n", r.kind.c_str(), r.clouds,
+                  r.samples, r.detections, r.false_positives, mae, time, bounded);
     return line;
 }
 }  // namespace
@@ -66,8 +72,10 @@ json evaluationToJson(const EvaluationReport& report, const EvaluationParams& pa
 
 std::string formatEvaluationTable(const EvaluationReport& report) {
     std::ostringstream out;
-    out << "kind         clouds samples detected FP     height    depth    width   location  time/det\n"
-        << "                                            MAE cm   MAE cm   MAE cm     MAE cm        ms\n";
+    // The last two columns: matched flights with both sides bounded (wall or open edge seen) and
+    // their width MAE: the width of a flight with an unseen side may be short by what was not seen.
+    out << "kind         clouds samples detected FP     height    depth    width   location  time/det  bounded   width\n"
+        << "                                            MAE cm   MAE cm   MAE cm     MAE cm        ms   sides   MAE cm\n";
     for (const auto& k : report.kinds) out << rowText(k);
     out << rowText(report.total);
     return out.str();

@@ -6,6 +6,7 @@
 
 #include "io/json/JsonFields.h"
 #include "io/json/LandmarkPlausibility.h"
+#include "io/json/StaircaseJson.h"
 #include "io/json/LandmarkParamsJson.h"
 
 namespace stairmap::io {
@@ -46,6 +47,8 @@ json landmarkToJson(const StaircaseLandmark& lm) {
             {"location", jf::toJson(s.location)},
             {"heading_deg", s.heading_rad * kRadToDeg},
             {"heading_rad", s.heading_rad},
+            {"left_side", stairSideName(s.left_side)},
+            {"right_side", stairSideName(s.right_side)},
             {"steps", steps}};
 }
 
@@ -114,6 +117,8 @@ StaircaseLandmark landmarkFromJson(const json& j, const std::string& path) {
     s.slope_rad = numberField(j, "slope_rad", path);
     s.heading_rad = numberField(j, "heading_rad", path);
     s.location = jf::vector3(jf::member(j, "location", path), path + ".location");
+    s.left_side = optionalSide(j, path, "left_side");  // absent in maps written before them
+    s.right_side = optionalSide(j, path, "right_side");
     const json& steps = jf::arrayMember(j, "steps", path);
     if (steps.empty()) throw std::runtime_error(path + ".steps: must not be empty");
     for (std::size_t i = 0; i < steps.size(); ++i) {

@@ -80,6 +80,16 @@ StairDirection directionFrom(const json& value, const std::string& field) {
 
 }  // namespace
 
+StairSide optionalSide(const nlohmann::json& object, const std::string& field,
+                       const std::string& key) {
+    StairSide side = StairSide::Unseen;  // files written before the field existed
+    const auto it = object.find(key);
+    if (it == object.end()) return side;
+    if (!it->is_string() || !stairSideFromName(it->get<std::string>(), side))
+        fail(field + "." + key, "expected \"wall\", \"open\" or \"unseen\"");
+    return side;
+}
+
 nlohmann::json toJson(const Staircase& s) {
     json steps = json::array();
     for (const StairEdge& e : s.steps) steps.push_back(edgeToJson(e));
@@ -91,6 +101,8 @@ nlohmann::json toJson(const Staircase& s) {
             {"slope_deg", s.slope_rad * kRadToDeg},
             {"location", vec3(s.location)},
             {"heading_deg", s.heading_rad * kRadToDeg},
+            {"left_side", stairSideName(s.left_side)},
+            {"right_side", stairSideName(s.right_side)},
             {"steps", steps}};
 }
 
@@ -104,6 +116,8 @@ Staircase staircaseFromJson(const nlohmann::json& j) {
     s.slope_rad = finiteNumber(member(j, f, "slope_deg"), f + ".slope_deg") / kRadToDeg;
     s.location = vec3From(member(j, f, "location"), f + ".location");
     s.heading_rad = finiteNumber(member(j, f, "heading_deg"), f + ".heading_deg") / kRadToDeg;
+    s.left_side = optionalSide(j, f, "left_side");
+    s.right_side = optionalSide(j, f, "right_side");
     const json& steps = member(j, f, "steps");
     if (!steps.is_array()) fail(f + ".steps", "expected an array");
     for (std::size_t i = 0; i < steps.size(); ++i) {

@@ -1,6 +1,8 @@
 // Persistence of the landmark map: exact round trip, continuation, error handling.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "io/json/LandmarkJson.h"
 #include "map/LandmarkTestMaps.h"
 
@@ -34,6 +36,8 @@ void expectSameState(const LandmarkMapState& a, const LandmarkMapState& b) {
         EXPECT_EQ(x.stairs.slope_rad, y.stairs.slope_rad);
         EXPECT_EQ(x.stairs.heading_rad, y.stairs.heading_rad);
         EXPECT_EQ(x.stairs.location, y.stairs.location);
+        EXPECT_EQ(x.stairs.left_side, y.stairs.left_side);
+        EXPECT_EQ(x.stairs.right_side, y.stairs.right_side);
         ASSERT_EQ(x.stairs.steps.size(), y.stairs.steps.size());
         for (std::size_t k = 0; k < x.stairs.steps.size(); ++k) {
             expectSameEdge(x.stairs.steps[k], y.stairs.steps[k]);
@@ -129,6 +133,35 @@ TEST(LandmarkJson, ContinuationKeepsIdsAndSecondRobotMergesIn) {
         EXPECT_EQ(second.staircases()[i].observations, 12);
         EXPECT_EQ(second.staircases()[i].stairs.steps.size(), 18u);
     }
+}
+
+TEST(LandmarkJson, SidesRoundTripAndMapsWithoutThemStillLoad) {
+    const LandmarkMap map = test::buildTestMap();
+    LandmarkMapState state = map.state();
+    state.staircases.at(0).stairs.left_side = StairSide::Wall;
+    state.staircases.at(0).stairs.right_side = StairSide::Open;
+    nlohmann::json doc = io::landmarkStateToJson(state, map.params());
+    EXPECT_EQ(doc["staircases"][0]["left_side"], "wall");
+    EXPECT_EQ(doc["staircases"][0]["right_side"], "open");
+    EXPECT_EQ(doc["staircases"][1]["left_side"], "unseen");
+    const std::string dir = test::scratchDir("sides");
+    {
+        std::ofstream(dir + "/with.json") << doc.dump();
+    }
+    const LandmarkMap with = io::loadLandmarkMap(dir + "/with.json");
+    EXPECT_EQ(with.staircases().at(0).stairs.left_side, StairSide::Wall);
+    EXPECT_EQ(with.staircases().at(0).stairs.right_side, StairSide::Open);
+    for (auto& s : doc["staircases"]) {
+        s.erase("left_side");
+        s.erase("right_side");
+    }
+    {
+        std::ofstream(dir + "/without.json") << doc.dump();
+    }
+    const LandmarkMap without = io::loadLandmarkMap(dir + "/without.json");
+    ASSERT_EQ(without.staircases().size(), map.staircases().size());
+    EXPECT_EQ(without.staircases().at(0).stairs.left_side, StairSide::Unseen);
+    EXPECT_EQ(without.staircases().at(0).stairs.step_width, map.staircases().at(0).stairs.step_width);
 }
 
 }  // namespace

@@ -128,5 +128,36 @@ TEST(StaircaseJson, DetectionToJsonIsTheCliContract) {
     EXPECT_EQ(detectionToJson(DetectionResult{}, 0.0).at("staircases"), json::array());
 }
 
+TEST(StaircaseJson, SidesAreWrittenAndReadBack) {
+    Staircase s = knownStaircase();
+    s.left_side = StairSide::Wall;
+    s.right_side = StairSide::Open;
+    const json j = toJson(s);
+    EXPECT_EQ(j.at("left_side"), "wall");
+    EXPECT_EQ(j.at("right_side"), "open");
+    const Staircase back = staircaseFromJson(json::parse(j.dump()));
+    EXPECT_EQ(back.left_side, StairSide::Wall);
+    EXPECT_EQ(back.right_side, StairSide::Open);
+    EXPECT_EQ(toJson(knownStaircase()).at("left_side"), "unseen");
+}
+
+TEST(StaircaseJson, FilesWithoutSidesLoadAsUnseenAndBadSidesAreNamed) {
+    Staircase s = knownStaircase();
+    s.left_side = StairSide::Wall;
+    json j = toJson(s);
+    j.erase("left_side");
+    j.erase("right_side");
+    const Staircase back = staircaseFromJson(j);
+    EXPECT_EQ(back.left_side, StairSide::Unseen);
+    EXPECT_EQ(back.right_side, StairSide::Unseen);
+    j["right_side"] = "railing";
+    try {
+        staircaseFromJson(j);
+        ADD_FAILURE() << "accepted right_side \"railing\"";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("staircase.right_side"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace stairmap::io

@@ -1,0 +1,180 @@
+#include "core/StepExtent.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "core/StaircaseGeometry.h"
+
+namespace stairmap {
+namespace {
+
+constexpr double kMinSpreadS = 0.02;  ///< [m] points of a bin spread less along s: no slope
+constexpr double kMaxTreadSlope = 0.25;  ///< [-] dz/ds; stairs' stringers slope 0.36-1 (20-45 deg)
+
+/// One step's tread in its own frame: c = edge centre, u = along the edge (left -> right), n =
+/// outward. Lateral bins from t0 record tread points and points above / below the tread.
+struct TreadScan {
+    Eigen::Vector2d c, u, n;
+    double z = 0.0, s_lo = 0.0, s_hi = 0.0, t0 = 0.0;
+    int edge_lo = 0, edge_hi = 0;  ///< bins covered by the found edge
+    std::vector<std::uint8_t> bins;  ///< bit 1: tread, 2: above it, 4: below it
+    /// per bin, points near the tread's height (within side_dz): their count and the sums that
+    /// give the slope of height against s. A tread is flat; a sloped surface beside it (a
+    /// stringer's top) crosses the tread's height within the run and is no tread.
+    struct Near {
+        int on = 0;  ///< of them within tread_dz
+        double n = 0, s = 0, ss = 0, z = 0, sz = 0;
+    };
+    std::vector<Near> near;
+    bool isTread(int b) const {
+        const Near& q = near[b];
+        if (q.on == 0) return false;
+        const double var_s = q.ss / q.n - (q.s / q.n) * (q.s / q.n);
+        if (var_s < kMinSpreadS * kMinSpreadS) return true;  // one ring: no slope to measure
+        const double slope = (q.sz / q.n - (q.s / q.n) * (q.z / q.n)) / var_s;
+        return std::abs(slope) < kMaxTreadSlope;
+    }
+};
+
+constexpr std::uint8_t kTread = 1, kAbove = 2, kBelow = 4;
+constexpr double kMaxAbove = 2.0;  ///< [m] higher points are ceilings, not walls
+
+TreadScan scanOf(const Staircase& s, std::size_t k, const StepExtentParams& p) {
+    const StairEdge& e = s.steps[k];
+    TreadScan t;
+    t.c = e.centre().head<2>();
+    t.u = (e.end - e.start).head<2>().normalized();
+    t.n = outwardNormal(s, k);
+    t.z = e.centre().z();
+    const double run = std::max(s.step_depth, 0.1);
+    const bool up = s.direction == StairDirection::Ascending;
+    t.s_lo = up ? p.tread_from_runs * run : -p.tread_to_runs * run;
+    t.s_hi = up ? p.tread_to_runs * run : -p.tread_from_runs * run;
+    const double half = 0.5 * e.length(), reach = p.max_extension_m + p.side_band_m;
+    t.t0 = -half - reach;
+    t.bins.assign(static_cast<std::size_t>(std::ceil((2 * half + 2 * reach) / p.bin_m)) + 1, 0);
+    t.near.assign(t.bins.size(), {});
+    t.edge_lo = static_cast<int>((-half - t.t0) / p.bin_m);
+    t.edge_hi = static_cast<int>((half - t.t0) / p.bin_m);
+    return t;
+}
+
+void addPoint(TreadScan& t, const Eigen::Vector3f& q, const StepExtentParams& p) {
+    const Eigen::Vector2d d(q.x() - t.c.x(), q.y() - t.c.y());
+    const double s = t.n.dot(d);
+    if (s < t.s_lo || s > t.s_hi) return;
+    const int b = static_cast<int>(std::floor((t.u.dot(d) - t.t0) / p.bin_m));
+    if (b < 0 || b >= static_cast<int>(t.bins.size())) return;
+    const double dz = q.z() - t.z;
+    if (std::abs(dz) <= p.side_dz_m) {
+        TreadScan::Near& q = t.near[b];
+        q.n += 1;
+        q.s += s;
+        q.ss += s * s;
+        q.z += dz;
+        q.sz += s * dz;
+        if (std::abs(dz) <= p.tread_dz_m) {
+            ++q.on;
+            t.bins[b] |= kTread;
+        }
+    } else if (dz > p.side_dz_m && dz < kMaxAbove) t.bins[b] |= kAbove;
+    else if (dz < -p.side_dz_m) t.bins[b] |= kBelow;
+}
+
+/// Last tread bin walking from `from` in direction `dir` (+1 / -1): across any hole up to
+/// max_gap, and across a longer one up to side_band when nothing in it rises above the tread (a
+/// sparse or shadowed tread; a wall or a box stops the walk after max_gap).
+int walkTread(const TreadScan& t, int from, int dir, const StepExtentParams& p) {
+    const int max_gap = static_cast<int>(p.max_gap_m / p.bin_m);
+    const int long_gap = static_cast<int>(p.side_band_m / p.bin_m);
+    const int max_steps = static_cast<int>(p.max_extension_m / p.bin_m);
+    int last = from, gap = 0;
+    bool above = false;
+    for (int i = from + dir, n = 0; i >= 0 && i < static_cast<int>(t.bins.size()) && n < max_steps;
+         i += dir, ++n) {
+        // After a hole the tread resumes only with another tread bin within the next two (not
+        // at a stray point, such as where a stringer's top crosses the tread's height).
+        const auto treadAt = [&](int j) {
+            return j >= 0 && j < static_cast<int>(t.bins.size()) && t.isTread(j);
+        };
+        const bool resumes = gap <= 1 || treadAt(i + dir) || treadAt(i + 2 * dir);
+        if (t.isTread(i) && resumes) {
+            last = i;
+            gap = 0;
+            above = false;
+            continue;
+        }
+        above = above || (t.bins[i] & kAbove);
+        if (++gap > long_gap || (above && gap > max_gap)) break;
+    }
+    return last;
+}
+
+/// Side at and beyond the last tread bin `end` in direction dir (the last bin may hold a wall's
+/// foot at the tread's height together with the wall above it).
+StairSide sideBeyond(const TreadScan& t, int end, int dir, const StepExtentParams& p) {
+    std::uint8_t seen = 0;
+    const int band = static_cast<int>(p.side_band_m / p.bin_m);
+    for (int i = end, n = 0; i >= 0 && i < static_cast<int>(t.bins.size()) && n <= band;
+         i += dir, ++n)
+        seen |= t.bins[i];
+    if (seen & kAbove) return StairSide::Wall;
+    if (seen & kBelow) return StairSide::Open;
+    return StairSide::Unseen;
+}
+
+struct SideVotes {
+    int wall = 0, open = 0, unseen = 0;
+    void add(StairSide s) { ++(s == StairSide::Wall ? wall : s == StairSide::Open ? open : unseen); }
+    StairSide result() const {
+        if (wall + open < unseen || wall + open == 0) return StairSide::Unseen;
+        return wall >= open ? StairSide::Wall : StairSide::Open;
+    }
+};
+
+/// Sets the edge to the measured extent (never shorter) and votes on its sides.
+void applyScan(const TreadScan& t, const StepExtentParams& p, StairEdge& e, SideVotes& left,
+               SideVotes& right) {
+    const int lo = walkTread(t, t.edge_lo, -1, p), hi = walkTread(t, t.edge_hi, +1, p);
+    left.add(sideBeyond(t, lo, -1, p));
+    right.add(sideBeyond(t, hi, +1, p));
+    const Eigen::Vector3d c = e.centre(), u(t.u.x(), t.u.y(), 0.0);
+    if (lo < t.edge_lo) e.start = c + (t.t0 + lo * p.bin_m) * u;
+    if (hi > t.edge_hi) e.end = c + (t.t0 + (hi + 1) * p.bin_m) * u;
+}
+
+}  // namespace
+
+void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepExtentParams& p) {
+    const std::size_t n = stairs.steps.size();
+    if (n < 2) return;
+    // The floor's edge (descending) and the landing's (ascending) border whole floors.
+    const bool up = stairs.direction == StairDirection::Ascending;
+    const std::size_t first = up ? 0 : 1, last = up ? n - 1 : n;
+    std::vector<TreadScan> scans;
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e18), hi = -lo;
+    for (std::size_t k = first; k < last; ++k) {
+        scans.push_back(scanOf(stairs, k, p));
+        const TreadScan& t = scans.back();
+        const double reach = -t.t0;
+        for (double a : {-reach, reach})
+            for (double b : {t.s_lo, t.s_hi}) {
+                const Eigen::Vector2d q = t.c + a * t.u + b * t.n;
+                lo = lo.cwiseMin(q);
+                hi = hi.cwiseMax(q);
+            }
+    }
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!(q.x() >= lo.x() && q.x() <= hi.x() && q.y() >= lo.y() && q.y() <= hi.y())) continue;
+        for (TreadScan& t : scans) addPoint(t, q, p);
+    }
+    SideVotes left, right;
+    for (std::size_t i = 0; i < scans.size(); ++i)
+        applyScan(scans[i], p, stairs.steps[first + i], left, right);
+    stairs.left_side = left.result();
+    stairs.right_side = right.result();
+    estimateGeometry(stairs);
+}
+
+}  // namespace stairmap

@@ -1,0 +1,41 @@
+#pragma once
+// Width of each step across the full visible extent of its tread, and what bounds each side.
+// A nosing line found in one z row is often a piece of the step (a gap in a far row, debris, the
+// end hidden by a stairwell wall's top), so the paper's width (mean edge length, Sec. III-D)
+// reads short. Here every tread is measured in the cloud itself: from the found edge, sideways
+// over the points lying on the tread (at its height, within its run) until a wall or a gap;
+// then beyond
+// each end the side is classified:
+//  - Wall:   points rising above the tread just beyond its end (a wall, a railing's posts);
+//  - Open:   no such points, but the floor or a drop (points well below the tread) seen there;
+//  - Unseen: no points beyond the end: the view does not cover it, the width may be short.
+// Edges are lengthened to the measured extent (never shortened), then the geometry re-estimated.
+
+#include "core/PointCloud.h"
+#include "core/Staircase.h"
+
+namespace stairmap {
+
+struct StepExtentParams {
+    double bin_m = 0.025;            ///< [m] lateral resolution (the top view's column size)
+    double tread_dz_m = 0.03;        ///< [m] a point is on the tread within this of its height
+    double tread_from_runs = 0.15;   ///< [-] tread window starts this far (in runs) from the nosing
+    double tread_to_runs = 0.85;     ///< [-] ... and ends here (away from the riser of the next)
+    double max_gap_m = 0.10;  ///< [m] the tread continues across any hole up to this ...
+    /// [m] ... and across holes up to this when nothing in them rises above the tread; also the
+    /// band beyond an end that is looked at for its side
+    double side_band_m = 0.30;
+    double max_extension_m = 2.5;    ///< [m] beyond the found edge, on each side
+    double side_dz_m = 0.08;         ///< [m] rising above / dropping below the tread by this
+};
+
+/// Measures every step of `stairs` (robot frame, as detected) in `cloud` as described above and
+/// sets the edges' extents, left_side / right_side (majority over the steps where that side was
+/// seen, unseen when most steps saw nothing) and the geometry. The floor's own edge (first edge
+/// of a descending flight) and the landing's (last of an ascending one) border whole floors and
+/// are neither measured nor voted on. Cost: one pass over the cloud per staircase plus
+/// O(points near it x steps).
+void measureStepExtents(const PointCloud& cloud, Staircase& stairs,
+                        const StepExtentParams& params = {});
+
+}  // namespace stairmap

@@ -1,0 +1,108 @@
+// Widths across the full visible tread and the side kinds, against clouds whose treads, walls and
+// open sides the test builds itself.
+#include "core/StepExtent.h"
+
+#include <gtest/gtest.h>
+
+#include "core/StairDetector.h"
+#include "core/StaircaseGeometry.h"
+#include "support/SyntheticScenes.h"
+
+namespace stairmap {
+namespace {
+
+constexpr double kRise = 0.17, kRun = 0.30, kHalfWidth = 0.8, kFloor = -0.5, kX0 = 2.0;
+constexpr int kSteps = 6;  // nosings; the last is the landing's
+
+double nosingX(int k) { return kX0 + k * kRun; }
+double treadZ(int k) { return kFloor + (k + 1) * kRise; }
+
+/// Points of a flight along +x (left = +y), every 2 cm: treads between y_lo and y_hi (the part
+/// the view covers), optionally a wall on the left (y = +0.8 .. +0.85) and the floor on the right.
+PointCloud flightCloud(double y_lo, bool left_wall, bool right_floor) {
+    PointCloud c;
+    for (int k = 0; k < kSteps; ++k) {
+        const double x_end = k + 1 < kSteps ? nosingX(k + 1) : nosingX(k) + 1.0;
+        for (double x = nosingX(k); x < x_end; x += 0.02) {
+            for (double y = y_lo; y <= kHalfWidth; y += 0.02)
+                c.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(treadZ(k)));
+            for (double z = treadZ(k); left_wall && z < treadZ(k) + 1.2; z += 0.04)
+                c.emplace_back(static_cast<float>(x), static_cast<float>(kHalfWidth + 0.03), static_cast<float>(z));
+            for (double y = -kHalfWidth - 0.6; right_floor && y < -kHalfWidth; y += 0.02)
+                c.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(kFloor));
+        }
+    }
+    return c;
+}
+
+/// The flight as a chain of nosing pieces 0.4 m long (y from -0.1 to 0.3), as broken lines give.
+Staircase pieces() {
+    Staircase s;
+    for (int k = 0; k < kSteps; ++k) {
+        StairEdge e;
+        e.start = {nosingX(k), 0.3, treadZ(k)};  // left end first (heading +x)
+        e.end = {nosingX(k), -0.1, treadZ(k)};
+        s.steps.push_back(e);
+    }
+    estimateGeometry(s);
+    return s;
+}
+
+TEST(StepExtent, PiecesGrowToTheWholeTreadBetweenAWallAndAnOpenSide) {
+    Staircase s = pieces();
+    ASSERT_NEAR(s.step_width, 0.4, 1e-9);
+    measureStepExtents(flightCloud(-kHalfWidth, true, true), s);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+    // within the 8 cm: the bin holding the wall's foot (3 cm out) counts as tread
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
+    for (int k = 0; k + 1 < kSteps; ++k) {  // the landing's edge is not measured
+        EXPECT_NEAR(s.steps[k].start.y(), kHalfWidth, 0.06) << "step " << k;
+        EXPECT_NEAR(s.steps[k].end.y(), -kHalfWidth, 0.04) << "step " << k;
+        EXPECT_NEAR(s.steps[k].start.x(), nosingX(k), 1e-9);
+        EXPECT_NEAR(s.steps[k].start.z(), treadZ(k), 1e-9);
+    }
+    EXPECT_NEAR(s.step_height, kRise, 1e-9);
+    EXPECT_NEAR(s.step_depth, kRun, 1e-9);
+}
+
+TEST(StepExtent, ASideTheViewDoesNotCoverIsUnseenAndTheWidthIsWhatWasSeen) {
+    Staircase s = pieces();
+    measureStepExtents(flightCloud(-0.4, false, false), s);  // nothing right of y = -0.4
+    EXPECT_EQ(s.right_side, StairSide::Unseen);
+    EXPECT_EQ(s.left_side, StairSide::Unseen);  // no wall, no floor beyond the left end either
+    EXPECT_NEAR(s.step_width, kHalfWidth + 0.4, 0.05);
+}
+
+TEST(StepExtent, EmptyCloudAndTinyStaircasesChangeNothing) {
+    Staircase s = pieces();
+    measureStepExtents({}, s);
+    EXPECT_NEAR(s.step_width, 0.4, 1e-9);
+    EXPECT_EQ(s.left_side, StairSide::Unseen);
+    Staircase empty;
+    measureStepExtents(flightCloud(-kHalfWidth, true, true), empty);
+    EXPECT_TRUE(empty.steps.empty());
+}
+
+TEST(StepExtent, DetectorReportsSidesAndFullWidthOnARayCastScene) {
+    // wall on the flight's left, floor visible beyond its right end
+    test::SceneOptions o;
+    test::SceneBuilder scene(o);
+    scene.addFloor();
+    test::StairSpec spec;
+    spec.width_m = 1.6;
+    spec.distance_m = 1.8;
+    spec.lateral_m = 0.3;
+    const test::StairTruth truth = scene.addStairs(spec);
+    const double wall_y = spec.lateral_m + 0.5 * spec.width_m + 0.025;  // 5 cm thick wall
+    scene.addWall({1.0, wall_y}, {spec.distance_m + 8 * spec.run_m, wall_y}, 2.5);
+    const DetectionResult r = StairDetector().detect(scene.cloud(), o.floor_z);
+    ASSERT_EQ(r.staircases.size(), 1u);
+    const Staircase& s = r.staircases[0];
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+    EXPECT_NEAR(s.step_width, truth.width_m, 0.08);
+}
+
+}  // namespace
+}  // namespace stairmap
