@@ -128,6 +128,29 @@ std::size_t pixelsNear(const mrpt::img::CImage& img, const unsigned char* rgb) {
     return n;
 }
 
+/// The pixel of `rgb` with the most pixels of that colour around it (inside a drawn edge, not at
+/// its anti-aliased border); (-1, -1) if there is none.
+std::pair<int, int> densestPixel(const mrpt::img::CImage& img, const unsigned char* rgb) {
+    const int w = static_cast<int>(img.getWidth()), h = static_cast<int>(img.getHeight());
+    std::vector<char> is(std::size_t(w) * h, 0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            is[std::size_t(y) * w + x] = std::abs(int(*img(x, y, 2)) - rgb[0]) < 40 &&
+                                         std::abs(int(*img(x, y, 1)) - rgb[1]) < 40 &&
+                                         std::abs(int(*img(x, y, 0)) - rgb[2]) < 40;
+    std::pair<int, int> best{-1, -1};
+    int best_count = 0;
+    for (int y = 3; y < h - 3; ++y)
+        for (int x = 3; x < w - 3; ++x) {
+            if (!is[std::size_t(y) * w + x]) continue;
+            int count = 0;
+            for (int dy = -3; dy <= 3; ++dy)
+                for (int dx = -3; dx <= 3; ++dx) count += is[std::size_t(y + dy) * w + x + dx];
+            if (count > best_count) best_count = count, best = {x, y};
+        }
+    return best;
+}
+
 TEST(ViewWindow, StepsWithKeysAndShowsTheLandmarks) {
     const std::string dir = cliScratchDir("view", "window");
     const int d = freeDisplay();
@@ -166,6 +189,19 @@ TEST(ViewWindow, StepsWithKeysAndShowsTheLandmarks) {
     EXPECT_EQ(pixelsNear(before, viz::kConfirmedRgb), 0u) << "a confirmed landmark at scan 20?";
     EXPECT_GT(pixelsNear(after, viz::kConfirmedRgb), 50u) << "no confirmed-landmark colour";
 
+    // A click on a drawn landmark edge selects it; a click on the empty corner clears it.
+    const auto [lx, ly] = densestPixel(after, viz::kConfirmedRgb);
+    ASSERT_GE(lx, 0);
+    ASSERT_EQ(sh(display, "xdotool mousemove " + std::to_string(lx) + " " + std::to_string(ly) +
+                              " click 1"), 0);
+    const auto stdoutHas = [&](const std::string& text) {
+        return readText(dir + "/stdout.txt").find(text) != std::string::npos;
+    };
+    EXPECT_TRUE(waitFor([&] { return stdoutHas("selected landmark #"); }, 10s))
+        << "clicking the landmark at (" << lx << ", " << ly << ") selected nothing";
+    ASSERT_EQ(sh(display, "xdotool mousemove 1270 710 click 1"), 0);
+    EXPECT_TRUE(waitFor([&] { return stdoutHas("selection cleared"); }, 10s))
+        << "clicking empty space did not clear the selection";
 
     sh(display, "xdotool key q");
     EXPECT_TRUE(waitFor([&] { return viewer.poll(); }, 30s)) << "the viewer did not quit on Q";
