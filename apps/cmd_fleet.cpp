@@ -66,6 +66,7 @@ int runFleet(const FleetOptions& opt, std::string& input) {
     if (!opt.ros2) throw std::invalid_argument("choose a transport: --ros2 (the only one so far)");
     if (opt.robots.empty()) throw std::invalid_argument("--robot: name at least one robot");
     input = opt.config;
+    if (!opt.out.empty()) std::filesystem::create_directories(opt.out);  // fails before subscribing
     const LandmarkParams params =
         opt.config.empty() ? LandmarkParams{} : io::loadMapperParams(opt.config).landmarks;
     fleetlive::LiveFleetMap fleet(opt.robots.size(), params);
