@@ -88,7 +88,7 @@ struct FleetRun {
                                     (dir / robot(r)).string(), "--queue", "1000", "--duration", "300"},
                                    child(std::string("live_") + r));
     }
-    // B at x4, A at x1.2 and later: A's last flight (from its scan 20 of 29) comes well after B's log ended
+    // B at x4, A at x1 and later: A's last flight (from its scan 20 of 29) comes well after B's log ended
     pid_t play(char r, const char* rate) const {
         const std::string log = kData + "robot_" + r;
         return test::spawnStairmap({"play", log + ".rawlog", "--poses", log + "_poses.tum", "--config", kConfig,
@@ -255,7 +255,7 @@ TEST(FleetLoopback, TwoRobotsOneKilledFleetKeepsItsLandmarksAndAlignsIt) {
     const pid_t live_a = children.add(run.live('a')), live_b = children.add(run.live('b'));
     const pid_t play_b = children.add(run.play('b', "4"));
     ASSERT_TRUE(b_map.waitFor([&] { return b_map.confirmed() >= 1; }, 90s)) << run.err("live_b");
-    const pid_t play_a = children.add(run.play('a', "1.2"));
+    const pid_t play_a = children.add(run.play('a', "1"));
 
     // B's log ends; once its map holds both flights and is final, B dies without a word
     EXPECT_EQ(children.wait(play_b, 90s), 0) << run.err("play_b");
