@@ -3,8 +3,10 @@
 // publishes), aligns and fuses the maps into the first robot's frame (fleetlive/LiveFleetMap.h)
 // and publishes /fleet/stairmap/staircases and /fleet/stairmap/markers. A robot that goes silent
 // keeps its landmarks; one that restarts replaces them. Runs until SIGINT/SIGTERM (exit 0) or
-// --duration.
+// --duration. --out DIR: the fleet map as files (landmarks.json, alignment.json, provenance.json,
+// as `stairmap merge` writes them), rewritten on every change.
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -12,6 +14,8 @@
 #include "Commands.h"
 #include "fleetlive/LiveFleetMap.h"
 #include "io/config/MapperConfig.h"
+#include "io/json/FleetJson.h"
+#include "io/json/LandmarkJson.h"
 #include "io/system/StopSignals.h"
 #include "map/LandmarkMap.h"
 #include "ros2/Ros2LandmarkPublisher.h"
@@ -23,6 +27,7 @@ namespace {
 struct FleetOptions {
     std::vector<std::string> robots;
     std::string config;
+    std::string out;  ///< empty: no files
     std::string frame_id = "map";
     std::string fleet_name = "fleet";
     double duration_s = 0.0;
@@ -41,10 +46,27 @@ void printStatus(const FleetOptions& opt, const fleetlive::LiveFleetMap& fleet) 
     }
 }
 
+/// The fleet map as `merge` writes it (docs/merge.md), robots named instead of paths; only robots
+/// in the fleet map are in alignment.json. Each file is replaced atomically.
+void writeOutputs(const FleetOptions& opt, const fleetlive::LiveFleetMap& fleet, const LandmarkParams& params) {
+    namespace fs = std::filesystem;
+    fs::create_directories(opt.out);
+    const fs::path dir(opt.out);
+    io::saveLandmarkStateAtomic((dir / "landmarks.json").string(), fleet.fleetMap(), params);
+    std::vector<io::AlignmentRecord> records;
+    for (std::size_t r = 0; r < opt.robots.size(); ++r) {
+        const fleetlive::RobotStatus& s = fleet.status()[r];
+        if (s.in_fleet_map) records.push_back({opt.robots[r], *s.T_fleet_robot, s.sigma, s.pairs});
+    }
+    io::saveAlignment((dir / "alignment.json").string(), records);
+    io::saveProvenance((dir / "provenance.json").string(), fleet.provenance(), opt.robots);
+}
+
 int runFleet(const FleetOptions& opt, std::string& input) {
     if (!opt.ros2) throw std::invalid_argument("choose a transport: --ros2 (the only one so far)");
     if (opt.robots.empty()) throw std::invalid_argument("--robot: name at least one robot");
     input = opt.config;
+    if (!opt.out.empty()) std::filesystem::create_directories(opt.out);  // fails before subscribing
     const LandmarkParams params =
         opt.config.empty() ? LandmarkParams{} : io::loadMapperParams(opt.config).landmarks;
     fleetlive::LiveFleetMap fleet(opt.robots.size(), params);
@@ -74,6 +96,7 @@ int runFleet(const FleetOptions& opt, std::string& input) {
         if (stamp < 0.0) continue;
         const LandmarkMap fleet_map(fleet.fleetMap(), params);
         publisher.publish(fleet_map.staircases(), fleet_map.floors(), stamp);
+        if (!opt.out.empty()) writeOutputs(opt, fleet, params);
         if (!opt.quiet) printStatus(opt, fleet);
     }
     publisher.flush(1.0);
@@ -95,6 +118,9 @@ Command addFleetCommand(CLI::App& app) {
     cmd->add_flag("--ros2", opt->ros2, "over ROS 2 (required: the only transport)");
     cmd->add_option("--robot", opt->robots, "robot name (repeat; the first sets the fleet frame)")->required();
     cmd->add_option("--config", opt->config, "INI file: [landmarks] parameters of the fusion");
+    cmd->add_option("--out", opt->out,
+                    "directory: landmarks.json, alignment.json, provenance.json of the fleet map, "
+                    "rewritten on every change (as `merge` writes them; robots named, not paths)");
     cmd->add_option("--frame-id", opt->frame_id, "frame_id of what is published (default map)");
     cmd->add_option("--fleet-name", opt->fleet_name, "namespace of the fleet topics (default fleet)");
     cmd->add_option("--duration", opt->duration_s, "[s] stop after this long (default: until a signal)");

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "fleet/AlignmentParams.h"
+#include "fleet/MapAlignment.h"
+#include "fleet/MapFusion.h"
 #include "fleet/Transform4.h"
 #include "map/LandmarkParams.h"
 #include "map/LandmarkTypes.h"
@@ -24,6 +26,8 @@ struct RobotStatus {
     std::size_t landmarks = 0;      ///< staircases in its latest map
     bool in_fleet_map = false;      ///< its landmarks are part of the fleet map
     std::optional<fleet::Transform4> T_fleet_robot;  ///< its frame in the fleet frame (once aligned)
+    fleet::AlignmentSigma sigma;              ///< of T_fleet_robot (zero for robot 0)
+    std::vector<fleet::LandmarkPair> pairs;   ///< (fleet map id, this robot's id) that fixed it
     std::string note;               ///< e.g. "no staircase shared with the fleet map yet"
 };
 
@@ -39,6 +43,8 @@ public:
 
     const LandmarkMapState& fleetMap() const { return fleet_; }
     const std::vector<RobotStatus>& status() const { return status_; }
+    /// Per landmark of fleetMap(), ordered by id; Contribution::map is the ROBOT index.
+    const std::vector<fleet::LandmarkProvenance>& provenance() const { return provenance_; }
 
 private:
     void rebuild();
@@ -47,6 +53,7 @@ private:
     std::vector<std::optional<LandmarkMapState>> maps_;
     std::vector<RobotStatus> status_;
     LandmarkMapState fleet_;
+    std::vector<fleet::LandmarkProvenance> provenance_;
 };
 
 }  // namespace stairmap::fleetlive

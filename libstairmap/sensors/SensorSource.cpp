@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "io/rawlog/PoseConversion.h"
-#include "sensors/GrowingTum.h"
+#include "io/follow/GrowingTum.h"
 #include "sensors/MrptErrorText.h"
 #include "sensors/SensorDriver.h"
 
@@ -69,7 +69,7 @@ private:
     std::string ini_path_;
     SensorSourceOptions options_;
     std::vector<std::unique_ptr<SensorDriver>> drivers_;
-    std::optional<GrowingTum> poses_;
+    std::optional<io::GrowingTum> poses_;
     PoseWait waiting_;
     Counters counters_;
 

@@ -64,6 +64,8 @@ void validate(const BuildingParams& p) {
     require(p.num_risers >= 4 && p.num_risers <= 30, "num_risers", "must be 4..30");
     require(p.run_m >= 0.15 && p.run_m <= 0.4, "run_m", "must be 0.15..0.4 m (the hall is 24 m)");
     require(p.width_m >= 0.5 && p.width_m <= 1.2, "width_m", "must be 0.5..1.2 m");
+    require(p.stair_b_run_m == 0.0 || (p.stair_b_run_m >= 0.15 && p.stair_b_run_m <= 0.4), "stair_b_run_m",
+            "must be 0 (= run_m) or 0.15..0.4 m");
 }
 
 void addTwoFloorBuilding(Scene& scene, const BuildingParams& p) {
@@ -77,7 +79,9 @@ void addTwoFloorBuilding(Scene& scene, const BuildingParams& p) {
     stair.solid_landing = false;
     stair.landing_depth_m = 0.3;
     stair.wall_left = stair.wall_right = false;
-    const double flight = (p.num_risers - 1) * p.run_m;
+    const double flight_a = (p.num_risers - 1) * p.run_m;
+    const double run_b = p.stair_b_run_m > 0.0 ? p.stair_b_run_m : p.run_m;
+    const double flight_b = (p.num_risers - 1) * run_b;
 
     stair.name = "stair_a";
     stair.origin = {2.0, 0.2 + 0.5 * p.width_m, 0.0};
@@ -86,10 +90,11 @@ void addTwoFloorBuilding(Scene& scene, const BuildingParams& p) {
     stair.name = "stair_b";
     stair.origin = {22.0, 9.8 - 0.5 * p.width_m, 0.0};
     stair.heading_deg = 180.0;
+    stair.run_m = run_b;
     addStraightStair(scene, stair);
 
     addShell(scene, h);
-    addUpperFloor(scene, h, 2.0 + flight, 22.0 - flight);
+    addUpperFloor(scene, h, 2.0 + flight_a, 22.0 - flight_b);
     addCorridor(scene, 0.0, h - 0.2, 4.0, 6.0);
     addCorridor(scene, h, 2.0 * h, 3.0, 7.0);
     if (p.furniture) addFurniture(scene, h);

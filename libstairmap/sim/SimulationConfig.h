@@ -29,6 +29,10 @@ struct RobotRun {
     /// The robot's own sensor (robots of one scene may differ, e.g. a level LiDAR on a wheeled
     /// robot and a pitched one on a legged robot); the loader fills it from [sensor] by default.
     MountedSensor mounted;
+    /// The robot's own (odometry) frame in the world: its reported poses (rawlog robot_pose,
+    /// poses.tum) are T_odom_robot = T_world_odom^-1 * T_world_robot; the truth stays in the world
+    /// frame. Identity: the robot reports world poses.
+    Eigen::Isometry3d T_world_odom = Eigen::Isometry3d::Identity();
 };
 
 /// A place where a single accumulated cloud is taken: the robot stands on (x, y, floor_z) facing yaw.

@@ -3,8 +3,11 @@
 // CDisplayWindowGUI first: nanogui sets up the OpenGL headers, then GLFW's key codes come along.
 #include <mrpt/gui/CDisplayWindowGUI.h>
 
+#include <mrpt/math/TLine3D.h>
+
 #include <chrono>
 #include <cstdlib>
+#include <mutex>
 #include <stdexcept>
 
 #include "viewer/ViewerPanel.h"
@@ -25,15 +28,20 @@ void applyCamera(mrpt::gui::CGlCanvasBase& canvas, const viz::CameraView& v) {
     canvas.setElevationDegrees(static_cast<float>(v.elevation_deg));
 }
 
-/// The canvas' current camera (the mouse may have moved it since applyCamera).
-viz::CameraView cameraOf(const mrpt::gui::CGlCanvasBase& canvas) {
-    viz::CameraView v;
-    v.target = {canvas.getCameraPointingX(), canvas.getCameraPointingY(),
-                canvas.getCameraPointingZ()};
-    v.distance_m = canvas.getZoomDistance();
-    v.azimuth_deg = canvas.getAzimuthDegrees();
-    v.elevation_deg = canvas.getElevationDegrees();
-    return v;
+/// The ray through window pixel (x, y) of the view as last drawn: MRPT's viewport keeps the
+/// projection of its last render, so the ray matches the picture even while the mouse or the
+/// follow camera moves it (a camera read back from the canvas and re-modelled did not, at times).
+viz::ViewRay rayOfLastDrawnView(mrpt::gui::CDisplayWindowGUI& win, int x_px, int y_px) {
+    mrpt::math::TLine3D line;
+    {
+        std::lock_guard<std::mutex> lock(win.background_scene_mtx);
+        win.background_scene->getViewport("main")->get3DRayForPixelCoord(x_px + 0.5, y_px + 0.5,
+                                                                         line);
+    }
+    viz::ViewRay ray;
+    ray.origin = {line.pBase.x, line.pBase.y, line.pBase.z};
+    ray.direction = Eigen::Vector3d(line.director.x, line.director.y, line.director.z).normalized();
+    return ray;
 }
 
 /// The MRPT window, with left clicks on the scene (not on the panel, not a camera drag) reported.
@@ -77,7 +85,7 @@ public:
         c_.state().tick(now);
         const bool moved = c_.sync();
         if (moved || c_.state().layers() != layers_ || c_.state().selected() != selected_ ||
-            first_) {
+            c_.state().camera() != camera_ || first_) {
             rebuild(moved);
         }
         panel_.update();
@@ -97,9 +105,7 @@ public:
 
     /// A click at window pixel (x, y): the landmark under it becomes the selection.
     void onClick(int x_px, int y_px) {
-        const viz::ViewImage image{win_.width(), win_.height(), 60.0};
-        const int id = c_.selectAlongRay(
-            viz::rayThroughPixel(cameraOf(win_.camera()), image, x_px + 0.5, y_px + 0.5));
+        const int id = c_.selectAlongRay(rayOfLastDrawnView(win_, x_px, y_px));
         if (on_select_) on_select_(id);
     }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "viz/ViewPicking.h"
 #include "viz/ViewerScene.h"
 
 namespace stairmap::viz {
@@ -125,7 +126,7 @@ CSetOfObjects::Ptr landmarkObjects(const std::vector<StaircaseLandmark>& landmar
         const bool selected = lm.id == selected_id;
         auto edges = lineSet(selected ? 8.0f : 5.0f, rgb[0], rgb[1], rgb[2]);
         const Staircase& s = lm.stairs;
-        const double depth = s.step_depth > 0 ? s.step_depth : 0.25;
+        const double depth = s.step_depth > 0 ? s.step_depth : kDrawnTreadDepthM;
         for (const StairEdge& e : s.steps) {
             appendEdge(*edges, e);
             // The tread behind the nosing, one run deep, thin and translucent.

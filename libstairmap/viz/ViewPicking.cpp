@@ -24,16 +24,16 @@ std::optional<double> hitSegment(const ViewRay& ray, const Eigen::Vector3d& a,
     return t;
 }
 
-/// Ray parameter where the ray crosses the horizontal tread between two consecutive step edges
-/// (the quad start_i, end_i, end_j, start_j at the height of edge i), if it does.
-std::optional<double> hitTread(const ViewRay& ray, const StairEdge& a, const StairEdge& b) {
+/// Ray parameter where the ray crosses the tread drawn behind a step edge (the horizontal quad
+/// start, end, end + behind, start + behind at the edge's height), if it does.
+std::optional<double> hitTread(const ViewRay& ray, const StairEdge& edge,
+                               const Eigen::Vector2d& behind) {
     if (std::abs(ray.direction.z()) < 1e-9) return std::nullopt;
-    const double z = a.centre().z();
-    const double t = (z - ray.origin.z()) / ray.direction.z();
+    const double t = (edge.centre().z() - ray.origin.z()) / ray.direction.z();
     if (t <= 0.0) return std::nullopt;
     const Eigen::Vector2d p = (ray.origin + t * ray.direction).head<2>();
-    const Eigen::Vector2d quad[4] = {a.start.head<2>(), a.end.head<2>(), b.end.head<2>(),
-                                     b.start.head<2>()};
+    const Eigen::Vector2d a = edge.start.head<2>(), b = edge.end.head<2>();
+    const Eigen::Vector2d quad[4] = {a, b, b + behind, a + behind};
     int sign = 0;  // inside a convex quad: the same side of all four edges
     for (int i = 0; i < 4; ++i) {
         const Eigen::Vector2d e = quad[(i + 1) % 4] - quad[i], r = p - quad[i];
@@ -46,16 +46,21 @@ std::optional<double> hitTread(const ViewRay& ray, const StairEdge& a, const Sta
     return t;
 }
 
-/// Nearest hit of one landmark along the ray.
+/// Nearest hit of one landmark along the ray: its step edges and the treads the viewer draws
+/// (one run deep behind each nosing, uphill; see landmarkObjects), the last one included.
 std::optional<double> hitLandmark(const Staircase& stairs, const ViewRay& ray,
                                   const PickParams& params) {
     std::optional<double> best;
     const auto keep = [&best](std::optional<double> t) {
         if (t && (!best || *t < *best)) best = t;
     };
-    for (std::size_t i = 0; i < stairs.steps.size(); ++i) {
-        keep(hitSegment(ray, stairs.steps[i].start, stairs.steps[i].end, params.edge_tolerance_m));
-        if (i + 1 < stairs.steps.size()) keep(hitTread(ray, stairs.steps[i], stairs.steps[i + 1]));
+    const double depth = stairs.step_depth > 0 ? stairs.step_depth : kDrawnTreadDepthM;
+    const double uphill = stairs.heading_rad +
+                          (stairs.direction == StairDirection::Ascending ? 0.0 : M_PI);
+    const Eigen::Vector2d behind = depth * Eigen::Vector2d(std::cos(uphill), std::sin(uphill));
+    for (const StairEdge& edge : stairs.steps) {
+        keep(hitSegment(ray, edge.start, edge.end, params.edge_tolerance_m));
+        keep(hitTread(ray, edge, behind));
     }
     return best;
 }

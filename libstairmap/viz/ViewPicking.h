@@ -30,13 +30,17 @@ Eigen::Vector3d eyePosition(const CameraView& view);
 /// mouse coordinates; pixel centres at +0.5).
 ViewRay rayThroughPixel(const CameraView& view, const ViewImage& image, double x_px, double y_px);
 
+/// [m] tread depth the viewer draws (and picks) behind each nosing of a landmark without a
+/// measured run.
+constexpr double kDrawnTreadDepthM = 0.25;
+
 /// How close a click must come to a landmark to pick it.
 struct PickParams {
     double edge_tolerance_m = 0.15;  ///< [m] ray-to-step-edge distance that still counts as a hit
 };
 
-/// The id of the landmark the ray meets first (a tread surface between two step edges, or within
-/// edge_tolerance_m of a step edge), or -1 when it meets none.
+/// The id of the landmark the ray meets first (a tread as the viewer draws it: one run deep behind
+/// each nosing, uphill; or within edge_tolerance_m of a step edge), or -1 when it meets none.
 int pickLandmark(const std::vector<StaircaseLandmark>& landmarks, const ViewRay& ray,
                  const PickParams& params = {});
 

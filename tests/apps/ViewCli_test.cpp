@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliRunner.h"
+#include "ImageChecks.h"
 #include "viz/ViewerScene.h"
 
 namespace stairmap::test {
@@ -38,40 +39,10 @@ mrpt::img::CImage load(const fs::path& p) {
     return img;
 }
 
-/// Fraction of pixels whose colour differs (any channel by > 8) between two images.
-double differingFraction(const mrpt::img::CImage& a, const mrpt::img::CImage& b) {
-    std::size_t diff = 0;
-    for (int y = 0; y < static_cast<int>(a.getHeight()); ++y)
-        for (int x = 0; x < static_cast<int>(a.getWidth()); ++x)
-            for (unsigned c = 0; c < 3; ++c)
-                if (std::abs(int(*a(x, y, c)) - int(*b(x, y, c))) > 8) {
-                    ++diff;
-                    break;
-                }
-    return double(diff) / (a.getWidth() * a.getHeight());
-}
-
-/// Pixels within 40 per channel of `rgb` (CImage stores BGR).
-std::size_t pixelsNear(const mrpt::img::CImage& img, const unsigned char* rgb) {
-    std::size_t n = 0;
-    for (int y = 0; y < static_cast<int>(img.getHeight()); ++y)
-        for (int x = 0; x < static_cast<int>(img.getWidth()); ++x)
-            if (std::abs(int(*img(x, y, 2)) - rgb[0]) < 40 && std::abs(int(*img(x, y, 1)) - rgb[1]) < 40 &&
-                std::abs(int(*img(x, y, 0)) - rgb[2]) < 40)
-                ++n;
-    return n;
-}
-
 /// Pixels of the background colour (dark grey 31,31,36).
 double backgroundFraction(const mrpt::img::CImage& img) {
     const unsigned char bg[3] = {31, 31, 36};
-    std::size_t n = 0;
-    for (int y = 0; y < static_cast<int>(img.getHeight()); ++y)
-        for (int x = 0; x < static_cast<int>(img.getWidth()); ++x)
-            if (std::abs(int(*img(x, y, 2)) - bg[0]) < 6 && std::abs(int(*img(x, y, 1)) - bg[1]) < 6 &&
-                std::abs(int(*img(x, y, 0)) - bg[2]) < 6)
-                ++n;
-    return double(n) / (img.getWidth() * img.getHeight());
+    return double(pixelsNear(img, bg, 6)) / (img.getWidth() * img.getHeight());
 }
 
 TEST(ViewCli, HeadlessFramesShowTheReplay) {

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "CliRunner.h"
+#include "ImageChecks.h"
 #include "viz/ViewerScene.h"
 
 extern char** environ;
@@ -106,28 +107,6 @@ mrpt::img::CImage screenshot(const std::string& display, const std::string& path
     return img;
 }
 
-double differingFraction(const mrpt::img::CImage& a, const mrpt::img::CImage& b) {
-    std::size_t diff = 0;
-    for (int y = 0; y < static_cast<int>(a.getHeight()); ++y)
-        for (int x = 0; x < static_cast<int>(a.getWidth()); ++x)
-            for (unsigned c = 0; c < 3; ++c)
-                if (std::abs(int(*a(x, y, c)) - int(*b(x, y, c))) > 8) {
-                    ++diff;
-                    break;
-                }
-    return double(diff) / (a.getWidth() * a.getHeight());
-}
-
-std::size_t pixelsNear(const mrpt::img::CImage& img, const unsigned char* rgb) {
-    std::size_t n = 0;
-    for (int y = 0; y < static_cast<int>(img.getHeight()); ++y)
-        for (int x = 0; x < static_cast<int>(img.getWidth()); ++x)
-            if (std::abs(int(*img(x, y, 2)) - rgb[0]) < 40 && std::abs(int(*img(x, y, 1)) - rgb[1]) < 40 &&
-                std::abs(int(*img(x, y, 0)) - rgb[2]) < 40)
-                ++n;
-    return n;
-}
-
 TEST(ViewWindow, StepsWithKeysAndShowsTheLandmarks) {
     const std::string dir = cliScratchDir("view", "window");
     const int d = freeDisplay();
@@ -166,6 +145,19 @@ TEST(ViewWindow, StepsWithKeysAndShowsTheLandmarks) {
     EXPECT_EQ(pixelsNear(before, viz::kConfirmedRgb), 0u) << "a confirmed landmark at scan 20?";
     EXPECT_GT(pixelsNear(after, viz::kConfirmedRgb), 50u) << "no confirmed-landmark colour";
 
+    // A click on a drawn landmark edge selects it; a click on the empty corner clears it.
+    const auto [lx, ly] = densestPixel(after, viz::kConfirmedRgb);
+    ASSERT_GE(lx, 0);
+    ASSERT_EQ(sh(display, "xdotool mousemove " + std::to_string(lx) + " " + std::to_string(ly) +
+                              " click 1"), 0);
+    const auto stdoutHas = [&](const std::string& text) {
+        return readText(dir + "/stdout.txt").find(text) != std::string::npos;
+    };
+    EXPECT_TRUE(waitFor([&] { return stdoutHas("selected landmark #"); }, 10s))
+        << "clicking the landmark at (" << lx << ", " << ly << ") selected nothing";
+    ASSERT_EQ(sh(display, "xdotool mousemove 1270 710 click 1"), 0);
+    EXPECT_TRUE(waitFor([&] { return stdoutHas("selection cleared"); }, 10s))
+        << "clicking empty space did not clear the selection";
 
     sh(display, "xdotool key q");
     EXPECT_TRUE(waitFor([&] { return viewer.poll(); }, 30s)) << "the viewer did not quit on Q";

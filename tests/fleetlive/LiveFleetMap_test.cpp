@@ -2,6 +2,8 @@
 // per staircase, silent robots keep their landmarks, late first robot, unalignable robot.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "fleetlive/FleetScenario.h"
 #include "fleetlive/LiveFleetMap.h"
 
@@ -62,6 +64,29 @@ TEST(LiveFleetMap, RobotsWaitForTheFirstAndForASharedStaircase) {
     fleet.update(0, robotA(true));
     EXPECT_TRUE(fleet.status()[2].in_fleet_map) << fleet.status()[2].note;
     EXPECT_EQ(fleet.fleetMap().staircases.size(), 5u);
+}
+
+TEST(LiveFleetMap, ProvenanceNamesRobotsEvenWhenOneWaitsOutside) {
+    const Transform4 T{4.0, 1.0, 0.0, 1.2};
+    LiveFleetMap fleet(3);
+    fleet.update(0, robotA());
+    fleet.update(1, mapOf({onlyA()}));  // not aligned: fused second would be map 1 of the fusion
+    fleet.update(2, robotB(T));
+    ASSERT_FALSE(fleet.status()[1].in_fleet_map);
+    ASSERT_TRUE(fleet.status()[2].in_fleet_map);
+    EXPECT_EQ(fleet.status()[2].pairs.size(), sharedFlights().size());
+    EXPECT_GT(fleet.status()[2].sigma.xy_m, 0.0);
+    ASSERT_EQ(fleet.provenance().size(), fleet.fleetMap().staircases.size());
+    int from_both = 0;
+    for (const fleet::LandmarkProvenance& p : fleet.provenance()) {
+        std::set<int> robots;
+        for (const fleet::Contribution& c : p.sources) robots.insert(c.map);
+        EXPECT_EQ(robots.count(1), 0u);  // the robot outside contributes nothing
+        from_both += robots.count(0) && robots.count(2);
+        for (const auto& step : p.steps)
+            for (const fleet::Contribution& c : step) EXPECT_NE(c.map, 1);
+    }
+    EXPECT_EQ(from_both, static_cast<int>(sharedFlights().size()));
 }
 
 TEST(LiveFleetMap, BadInputChangesNothing) {

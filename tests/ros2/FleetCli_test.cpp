@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -83,6 +84,16 @@ TEST(FleetCli, NeedsRobotsAndTransport) {
     EXPECT_NE(test::fileText(child.stderr_path).find("--ros2"), std::string::npos);
     EXPECT_EQ(test::waitForExit(test::spawnStairmap({"fleet", "--ros2"}, child), 20s), 2);
     EXPECT_NE(test::fileText(child.stderr_path).find("--robot"), std::string::npos);
+}
+
+TEST(FleetCli, AnOutFolderThatCannotBeMadeFailsAtOnce) {
+    const std::string file = scratch("not_a_folder");
+    std::ofstream(file) << "x";
+    test::ChildOptions child;
+    child.stderr_path = scratch("out.err");
+    const std::string out = file + "/fleet";
+    EXPECT_EQ(test::waitForExit(test::spawnStairmap({"fleet", "--ros2", "--robot", "a", "--out", out}, child), 20s), 2);
+    EXPECT_NE(test::fileText(child.stderr_path).find(out), std::string::npos) << test::fileText(child.stderr_path);
 }
 
 }  // namespace

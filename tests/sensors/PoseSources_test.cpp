@@ -1,5 +1,5 @@
-// Robot poses for sensor scans: a TUM file still being written (GrowingTum), scans waiting a
-// bounded time for their pose (PoseWait), and the --sensor source with a growing pose file.
+// Robot poses for sensor scans: scans waiting a bounded time for their pose (PoseWait), and the
+// --sensor source with a growing pose file (io/follow's GrowingTum, tested in tests/io/follow).
 #include <gtest/gtest.h>
 #include <mrpt/core/Clock.h>
 
@@ -9,7 +9,6 @@
 #include <thread>
 
 #include "SensorTestUtil.h"
-#include "sensors/GrowingTum.h"
 #include "sensors/PoseWait.h"
 #include "sensors/SensorSource.h"
 
@@ -44,37 +43,6 @@ io::TumTrajectory lineTrajectory(double t0, double t1) {  // x = t
 }
 
 }  // namespace
-
-TEST(GrowingTum, ReadsCompletedLinesAndWaitsForAPartialOne) {
-    const std::string path = writeFile(tempDir("growing_tum") + "/p.tum", "# t x y z qx qy qz qw\n");
-    sensors::GrowingTum tum(path);
-    EXPECT_FALSE(tum.refresh());
-    append(path, tumLine(10.0, 1.0) + "11.0 2 0 0 0 0");  // the second line is still being written
-    EXPECT_TRUE(tum.refresh());
-    EXPECT_EQ(tum.trajectory().size(), 1u);
-    append(path, " 0 1\n");
-    EXPECT_TRUE(tum.refresh());
-    ASSERT_EQ(tum.trajectory().size(), 2u);
-    EXPECT_NEAR(tum.trajectory().poseAt(10.5)->translation().x(), 1.5, 1e-12);
-}
-
-TEST(GrowingTum, ErrorsNameTheFileAndLine) {
-    const std::string dir = tempDir("growing_tum_errors");
-    EXPECT_THROW(sensors::GrowingTum(dir + "/missing.tum"), std::runtime_error);
-    const std::string path = writeFile(dir + "/p.tum", tumLine(2.0, 0) + tumLine(1.0, 0));
-    sensors::GrowingTum tum(path);
-    try {
-        tum.refresh();
-        FAIL() << "no error for a time going back";
-    } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find(path + ":2:"), std::string::npos) << e.what();
-    }
-    const std::string shrinking = writeFile(dir + "/s.tum", tumLine(1.0, 0) + tumLine(2.0, 0));
-    sensors::GrowingTum tum2(shrinking);
-    tum2.refresh();
-    writeFile(shrinking, tumLine(1.0, 0));
-    EXPECT_THROW(tum2.refresh(), std::runtime_error);
-}
 
 TEST(PoseWait, ReleasesInOrderOnceThePoseIsKnown) {
     sensors::PoseWait wait({/*max_wait_s=*/1.0, /*tolerance_s=*/0.0, /*max_pending=*/8});
@@ -208,21 +176,4 @@ TEST(SensorSourcePoses, SensorPoseFromTheStairmapConfig) {
         const Eigen::Vector3f expected = (T->cast<float>() * a.scans[1].points_robot[i]);
         EXPECT_LT((b.scans[1].points_robot[i] - expected).norm(), 1e-4f) << i;
     }
-}
-
-TEST(GrowingTum, ForgetsOldPosesButKeepsOneForInterpolation) {
-    std::string text;
-    for (int i = 0; i < 100; ++i) text += tumLine(double(i), double(i));
-    const std::string path = writeFile(tempDir("growing_tum_forget") + "/p.tum", text);
-    sensors::GrowingTum tum(path);
-    tum.refresh();
-    tum.forgetBefore(20.5);  // fewer than half could go: nothing is copied yet
-    EXPECT_EQ(tum.trajectory().size(), 100u);
-    tum.forgetBefore(80.5);
-    ASSERT_EQ(tum.trajectory().size(), 20u);  // poses 80 .. 99
-    EXPECT_NEAR(tum.trajectory().poseAt(80.5)->translation().x(), 80.5, 1e-12);
-    EXPECT_FALSE(tum.trajectory().poseAt(79.0).has_value());
-    append(path, tumLine(100.0, 100.0));  // reading goes on where it was
-    EXPECT_TRUE(tum.refresh());
-    EXPECT_EQ(tum.trajectory().size(), 21u);
 }

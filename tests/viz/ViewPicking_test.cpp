@@ -91,6 +91,9 @@ StaircaseLandmark flight(int id, double x0, int n) {
         e.end = {x0 + 0.28 * i, -0.5, 0.17 * (i + 1)};
         l.stairs.steps.push_back(e);
     }
+    l.stairs.step_depth = 0.28;
+    l.stairs.heading_rad = 0.0;  // uphill along +x
+    l.stairs.direction = StairDirection::Ascending;
     return l;
 }
 
@@ -109,9 +112,13 @@ TEST(ViewPicking, PicksTheFirstLandmarkAlongTheRay) {
     // Beside the flights (2 m to the side) and pointing away: nothing.
     EXPECT_EQ(pickLandmark(map, rayFrom({0.42, 2.5, 10.0}, {0.42, 2.5, 0.0})), -1);
     EXPECT_EQ(pickLandmark(map, rayFrom({-5.0, 0.0, 0.34}, {-10.0, 0.0, 0.34})), -1);
-    // Just off the top edge (no tread beyond it) but within the edge tolerance.
-    EXPECT_EQ(pickLandmark(map, rayFrom({1.22, 0.0, 10.0}, {1.22, 0.0, 0.0})), 3);
-    EXPECT_EQ(pickLandmark(map, rayFrom({1.40, 0.0, 10.0}, {1.40, 0.0, 0.0})), -1);
+    // The top tread as drawn: one run (0.28 m) behind the last nosing at x = 1.12, beyond the
+    // edge tolerance; past its far end, nothing.
+    EXPECT_EQ(pickLandmark(map, rayFrom({1.35, 0.0, 10.0}, {1.35, 0.0, 0.0})), 3);
+    EXPECT_EQ(pickLandmark(map, rayFrom({1.60, 0.0, 10.0}, {1.60, 0.0, 0.0})), -1);
+    // Just below the lowest nosing (x = 0, no tread in front of it) but within the edge tolerance.
+    EXPECT_EQ(pickLandmark(map, rayFrom({-0.10, 0.0, 10.0}, {-0.10, 0.0, 0.0})), 3);
+    EXPECT_EQ(pickLandmark(map, rayFrom({-0.30, 0.0, 10.0}, {-0.30, 0.0, 0.0})), -1);
 }
 
 }  // namespace

@@ -78,6 +78,7 @@ void buildBuilding(const IniFieldReader& ini, sim::SimulationConfig& config) {
     p.num_risers = ini.getInt(s, "num_risers", p.num_risers);
     p.run_m = ini.getDouble(s, "run_m", p.run_m);
     p.width_m = ini.getDouble(s, "width_m", p.width_m);
+    p.stair_b_run_m = ini.getDouble(s, "stair_b_run_m", p.stair_b_run_m);
     p.furniture = ini.getBool(s, "furniture", p.furniture);
     checked(ini, s, [&] { sim::addTwoFloorBuilding(config.scene, p); });
 }

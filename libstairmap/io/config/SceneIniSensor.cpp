@@ -32,6 +32,18 @@ std::vector<Eigen::Vector3d> waypoints(const IniFieldReader& ini, const std::str
     return points;
 }
 
+/// `odom_frame = x y z yaw_deg`: the robot's own frame in the world (default: the world). A real
+/// robot reports poses in its own odometry frame; a fleet must find these transforms.
+Eigen::Isometry3d odomFrame(const IniFieldReader& ini, const std::string& section) {
+    if (!ini.has(section, "odom_frame")) return Eigen::Isometry3d::Identity();
+    const std::vector<double> v = ini.getNumbers(section, "odom_frame");
+    if (v.size() != 4) ini.fail(section, "odom_frame", "expected 'x y z yaw_deg'");
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+    T.linear() = Eigen::AngleAxisd(v[3] * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    return T;
+}
+
 /// Reads one sensor section ([sensor] or a robot's own, named by its `sensor` key).
 sim::MountedSensor loadMountedSensor(const IniFieldReader& ini, const std::string& s) {
     sim::MountedSensor mounted;
@@ -101,6 +113,7 @@ void loadRobotRuns(const IniFieldReader& ini, sim::SimulationConfig& config) {
         run.drift.seed = static_cast<unsigned>(ini.getInt(section, "drift_seed", 1));
         run.sway.tilt_std_deg = ini.getDouble(section, "sway_tilt_deg", 0.0);
         run.sway.seed = static_cast<unsigned>(ini.getInt(section, "sway_seed", 1));
+        run.T_world_odom = odomFrame(ini, section);
         if (!(run.sway.tilt_std_deg >= 0 && run.sway.tilt_std_deg <= 10))
             ini.fail(section, "sway_tilt_deg", "must be in [0, 10] deg");
         if (run.drift.xy_std_per_m < 0 || run.drift.z_std_per_m < 0 || run.drift.yaw_std_deg_per_m < 0)

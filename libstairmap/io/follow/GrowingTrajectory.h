@@ -5,16 +5,16 @@
 // interpolated pose as `stairmap map` would get from the finished file; if the file stops growing
 // for wait_s first, the poses there are used (within tolerance_s of their ends, else none).
 // Memory: poses older than keep_s before the latest query are forgotten (queries come in time
-// order), so a long run keeps a bounded window.
+// order), so a long run keeps a bounded window. The file is read by GrowingTum; this class adds
+// the waiting.
 
 #include <Eigen/Geometry>
 #include <atomic>
 #include <chrono>
-#include <cstdint>
 #include <optional>
 #include <string>
 
-#include "io/rawlog/TumTrajectory.h"
+#include "io/follow/GrowingTum.h"
 
 namespace stairmap::io {
 
@@ -36,23 +36,15 @@ public:
     /// std::runtime_error naming the file and line on a malformed line. Queries in time order.
     std::optional<Eigen::Isometry3d> poseAt(double t);
 
-    std::size_t posesRead() const { return poses_read_; }
-    std::size_t posesKept() const { return trajectory_.size(); }
+    std::size_t posesRead() const { return tum_.posesRead(); }
+    std::size_t posesKept() const { return tum_.trajectory().size(); }
     /// Queries that had to wait for the file to grow.
     std::size_t waits() const { return waits_; }
 
 private:
-    bool refresh();  // reads new complete lines; true if the file grew
-    void append(const TumTrajectory& chunk);
-    void forgetBefore(double t);
-
-    std::string path_;
+    GrowingTum tum_;
     GrowingTrajectoryParams params_;
     const std::atomic<bool>& stop_;
-    uint64_t offset_ = 0;       // bytes of complete lines consumed
-    std::size_t lines_ = 0;     // complete lines consumed
-    TumTrajectory trajectory_;
-    std::size_t poses_read_ = 0;
     std::size_t waits_ = 0;
     std::chrono::steady_clock::time_point last_growth_;
 };

@@ -37,12 +37,25 @@ double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+/// Re-expresses the reported poses in the robot's own frame (RobotRun::T_world_odom); the
+/// covariance's position rows turn with the frame's yaw.
+void toOdomFrame(std::vector<sim::TrajectorySample>& samples, const Eigen::Isometry3d& T_world_odom) {
+    const Eigen::Isometry3d T_odom_world = T_world_odom.inverse();
+    Eigen::Matrix<double, 6, 6> J = Eigen::Matrix<double, 6, 6>::Identity();
+    J.topLeftCorner<3, 3>() = T_odom_world.linear();
+    for (auto& s : samples) {
+        s.T_world_robot_reported = T_odom_world * s.T_world_robot_reported;
+        s.covariance = J * s.covariance * J.transpose();
+    }
+}
+
 nlohmann::json runRobot(const sim::SimulationConfig& config, const sim::RobotRun& run, bool single,
                         const fs::path& dir, const SimulationRunOptions& options,
                         SimulationRunSummary& summary, unsigned seed) {
     auto samples = sim::sampleTrajectory(run.trajectory);
     sim::applySway(samples, run.sway);
     sim::applyDrift(samples, run.drift);
+    if (!run.T_world_odom.isApprox(Eigen::Isometry3d::Identity())) toOdomFrame(samples, run.T_world_odom);
     const std::string prefix = single ? "" : run.name + "_";
     const fs::path rawlog = dir / (run.name + ".rawlog");
     SimRawlogWriter writer(rawlog.string(), options.gzip_level, config.rawlog_quantum_m);
@@ -73,7 +86,7 @@ nlohmann::json runRobot(const sim::SimulationConfig& config, const sim::RobotRun
     writeTumPosesFile(poses.string(), reported);
     writeTumPosesFile(gt_traj.string(), truth);
     summary.files.insert(summary.files.end(), {rawlog.string(), poses.string(), gt_traj.string()});
-    return {{"name", run.name},
+    nlohmann::json entry = {{"name", run.name},
             {"rawlog", rawlog.filename().string()},
             {"poses", poses.filename().string()},
             {"gt_trajectory", gt_traj.filename().string()},
@@ -81,6 +94,9 @@ nlohmann::json runRobot(const sim::SimulationConfig& config, const sim::RobotRun
             {"sensor", mounted.sensor.model},
             {"T_robot_sensor", matrixJson(mounted.T_robot_sensor)},
             {"base_height_m", run.trajectory.base_height_m}};
+    // only for a robot in its own frame: the older datasets' gt.json stay byte-identical
+    if (!run.T_world_odom.isApprox(Eigen::Isometry3d::Identity())) entry["T_world_odom"] = matrixJson(run.T_world_odom);
+    return entry;
 }
 
 void writeClouds(const sim::SimulationConfig& config, const fs::path& dir,

@@ -76,6 +76,23 @@ TEST(SimSceneIni, RobotsCanCarryTheirOwnSensor) {
     EXPECT_DOUBLE_EQ(b.trajectory.base_height_m, 0.3);
 }
 
+TEST(SimSceneIni, RobotsCanReportPosesInTheirOwnFrame) {
+    const auto path = writeIni("odom.ini",
+                               "[scene]\ntype = two_floor_building\n[building]\nstair_b_run_m = 0.34\n"
+                               "[trajectory]\nrobots = a b\n[a]\nwaypoints = 5 5 0; 6 5 0\n"
+                               "[b]\nwaypoints = 5 5 0; 6 5 0\nodom_frame = 3 -2 0.5 90\n");
+    const auto config = loadSimulationConfig(path);
+    ASSERT_EQ(config.robots.size(), 2u);
+    EXPECT_TRUE(config.robots[0].T_world_odom.isApprox(Eigen::Isometry3d::Identity()));
+    const Eigen::Isometry3d& T = config.robots[1].T_world_odom;
+    EXPECT_TRUE(T.translation().isApprox(Eigen::Vector3d(3, -2, 0.5)));
+    // 90 deg about +z: the odom frame's x axis is the world's y axis
+    EXPECT_TRUE((T.linear() * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
+    ASSERT_EQ(config.scene.truth().staircases.size(), 2u);
+    EXPECT_DOUBLE_EQ(config.scene.truth().staircases[0].run_m, 0.28);
+    EXPECT_DOUBLE_EQ(config.scene.truth().staircases[1].run_m, 0.34);
+}
+
 TEST(SimSceneIni, NegativesSceneHoldsEveryPartAndNoStaircase) {
     const auto path = writeIni("park.ini",
                                "[scene]\ntype = negatives\n[negatives]\nparts = r c\n"
@@ -139,6 +156,10 @@ TEST(SimSceneIni, BadValuesNameFileSectionAndKey) {
                 "[trajectory] quantum_m");
     expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0; 1 0 0\nsway_tilt_deg = 20\n",
                 "[trajectory] sway_tilt_deg");
+    expectError("[scene]\ntype = ascending\n[trajectory]\nwaypoints = 0 0 0; 1 0 0\nodom_frame = 1 2 3\n",
+                "[trajectory] odom_frame");
+    expectError("[scene]\ntype = two_floor_building\n[building]\nstair_b_run_m = 0.9\n" + clouds,
+                "stair_b_run_m");
     expectError("[scene]\ntype = negatives\n" + clouds, "[negatives] parts");
     expectError("[scene]\ntype = negatives\n[negatives]\nparts = p\n[p]\ntype = stairs\n" + clouds,
                 "[p] type");

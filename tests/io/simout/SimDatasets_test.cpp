@@ -52,5 +52,29 @@ TEST(SimDatasets, TwoRobotSequencesAreConsistent) {
     checkSequence(kDatasets + "/two_robot", "robot_b.rawlog", "robot_b_");
 }
 
+TEST(SimDatasets, FleetSequencesAreConsistent) {
+    checkSequence(kDatasets + "/two_robot_fleet", "robot_a.rawlog", "robot_a_");
+    checkSequence(kDatasets + "/two_robot_fleet", "robot_b.rawlog", "robot_b_");
+}
+
+// robot_b of two_robot_fleet reports poses in its own frame, odom_frame = 3 -2 0.5 35 deg in the
+// scene INI: moved back by that transform they are the true poses up to the small drift.
+TEST(SimDatasets, FleetRobotBReportsPosesInItsOwnFrame) {
+    const std::string dir = kDatasets + "/two_robot_fleet/";
+    Eigen::Isometry3d T_world_odom = Eigen::Isometry3d::Identity();
+    T_world_odom.translation() = Eigen::Vector3d(3.0, -2.0, 0.5);
+    T_world_odom.linear() = Eigen::AngleAxisd(35.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const auto reported = TumTrajectory::load(dir + "robot_b_poses.tum");
+    const auto truth = TumTrajectory::load(dir + "robot_b_gt_trajectory.tum");
+    ASSERT_EQ(reported.size(), truth.size());
+    for (const auto& p : reported.poses()) {
+        const auto T_true = truth.poseAt(p.stamp_s, 1e-3);
+        ASSERT_TRUE(T_true);
+        EXPECT_LT(((T_world_odom * p.T_world_robot).translation() - T_true->translation()).norm(), 0.1);
+    }
+    EXPECT_GT((reported.poses().front().T_world_robot.translation() -
+               truth.poses().front().T_world_robot.translation()).norm(), 1.0);
+}
+
 }  // namespace
 }  // namespace stairmap::io

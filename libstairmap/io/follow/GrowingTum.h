@@ -1,15 +1,16 @@
 #pragma once
 // A TUM trajectory file that another program is still writing ("t x y z qx qy qz qw" lines, '#'
 // comments): each refresh() reads the lines completed since the last one. A last line without its
-// newline is left for the next refresh (writers flush in the middle of lines). Never blocks
-// (io/follow's GrowingTrajectory waits inside poseAt, which suits a lossless follower, not a sensor).
+// newline is left for the next refresh (writers flush in the middle of lines). Never blocks: a
+// sensor source polls it (sensors/PoseWait); GrowingTrajectory adds the waiting a lossless
+// follower needs.
 
 #include <cstdint>
 #include <string>
 
 #include "io/rawlog/TumTrajectory.h"
 
-namespace stairmap::sensors {
+namespace stairmap::io {
 
 class GrowingTum {
 public:
@@ -26,7 +27,9 @@ public:
     /// of the poses can go).
     void forgetBefore(double t);
 
-    const io::TumTrajectory& trajectory() const { return trajectory_; }
+    const TumTrajectory& trajectory() const { return trajectory_; }
+    /// Poses read since the start (forgotten ones included).
+    std::size_t posesRead() const { return poses_read_; }
     const std::string& path() const { return path_; }
 
 private:
@@ -34,7 +37,8 @@ private:
     std::string path_;
     std::uint64_t offset_ = 0;     // [bytes] consumed so far (complete lines only)
     std::size_t line_number_ = 0;  // of the last consumed line
-    io::TumTrajectory trajectory_;
+    TumTrajectory trajectory_;
+    std::size_t poses_read_ = 0;
 };
 
-}  // namespace stairmap::sensors
+}  // namespace stairmap::io

@@ -1,4 +1,4 @@
-#include "sensors/GrowingTum.h"
+#include "io/follow/GrowingTum.h"
 
 #include <cmath>
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace stairmap::sensors {
+namespace stairmap::io {
 
 namespace fs = std::filesystem;
 
@@ -44,7 +44,7 @@ void GrowingTum::forgetBefore(double t) {
     std::size_t first = 0;  // the last pose at or before t stays
     while (first + 1 < poses.size() && poses[first + 1].stamp_s <= t) ++first;
     if (first == 0 || 2 * first < poses.size()) return;
-    io::TumTrajectory kept;
+    TumTrajectory kept;
     for (std::size_t i = first; i < poses.size(); ++i) kept.append(poses[i].stamp_s, poses[i].T_world_robot);
     trajectory_ = std::move(kept);
 }
@@ -68,9 +68,10 @@ void GrowingTum::parseLine(const std::string& line) {
     T.translation() = Eigen::Vector3d(v[1], v[2], v[3]);
     try {
         trajectory_.append(v[0], T);
+        ++poses_read_;
     } catch (const std::exception&) {
         throw std::runtime_error(where + "time " + std::to_string(v[0]) + " does not increase");
     }
 }
 
-}  // namespace stairmap::sensors
+}  // namespace stairmap::io
