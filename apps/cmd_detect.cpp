@@ -38,6 +38,8 @@ const char* kDetectHelp =
     "    \"step_height\":m,\"step_depth\":m,\"step_width\":m,\"slope_deg\":deg,\n"
     "    \"location\":[x,y,z] (centre of the first step edge),\"heading_deg\":deg (direction of\n"
     "    travel up/down the flight, counter-clockwise from +x),\n"
+    "    \"left_side\"|\"right_side\":\"wall\"|\"open\"|\"unseen\" (what ends the treads, looking\n"
+    "    along the heading; unseen: the view does not cover it, the width may be short there),\n"
     "    \"steps\":[{\"start\":[x,y,z],\"end\":[x,y,z],...},...] (from the robot's floor outward)}],\n"
     "   \"time_ms\":t (detector only, no file reading),\"floor_z\":m,\"floor_estimated\":bool,\n"
     "   \"num_points\":n (finite points read),\n"
