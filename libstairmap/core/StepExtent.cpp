@@ -17,6 +17,7 @@ constexpr double kMaxTreadSlope = 0.25;  ///< [-] dz/ds; stairs' stringers slope
 struct TreadScan {
     Eigen::Vector2d c, u, n;
     double z = 0.0, s_lo = 0.0, s_hi = 0.0, t0 = 0.0;
+    std::size_t step = 0;          ///< index in the staircase
     int edge_lo = 0, edge_hi = 0;  ///< bins covered by the found edge
     std::vector<std::uint8_t> bins;  ///< bit 1: tread, 2: above it, 4: below it
     /// per bin, points near the tread's height (within side_dz): their count and the sums that
@@ -43,6 +44,7 @@ constexpr double kMaxAbove = 2.0;  ///< [m] higher points are ceilings, not wall
 TreadScan scanOf(const Staircase& s, std::size_t k, const StepExtentParams& p) {
     const StairEdge& e = s.steps[k];
     TreadScan t;
+    t.step = k;
     t.c = e.centre().head<2>();
     t.u = (e.end - e.start).head<2>().normalized();
     t.n = outwardNormal(s, k);
@@ -68,14 +70,14 @@ void addPoint(TreadScan& t, const Eigen::Vector3f& q, const StepExtentParams& p)
     if (b < 0 || b >= static_cast<int>(t.bins.size())) return;
     const double dz = q.z() - t.z;
     if (std::abs(dz) <= p.side_dz_m) {
-        TreadScan::Near& q = t.near[b];
-        q.n += 1;
-        q.s += s;
-        q.ss += s * s;
-        q.z += dz;
-        q.sz += s * dz;
+        TreadScan::Near& acc = t.near[b];
+        acc.n += 1;
+        acc.s += s;
+        acc.ss += s * s;
+        acc.z += dz;
+        acc.sz += s * dz;
         if (std::abs(dz) <= p.tread_dz_m) {
-            ++q.on;
+            ++acc.on;
             t.bins[b] |= kTread;
         }
     } else if (dz > p.side_dz_m && dz < kMaxAbove) t.bins[b] |= kAbove;
@@ -155,6 +157,7 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
     std::vector<TreadScan> scans;
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e18), hi = -lo;
     for (std::size_t k = first; k < last; ++k) {
+        if (!(stairs.steps[k].length() > 1e-6)) continue;  // no direction to measure along
         scans.push_back(scanOf(stairs, k, p));
         const TreadScan& t = scans.back();
         const double reach = -t.t0;
@@ -170,8 +173,7 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
         for (TreadScan& t : scans) addPoint(t, q, p);
     }
     SideVotes left, right;
-    for (std::size_t i = 0; i < scans.size(); ++i)
-        applyScan(scans[i], p, stairs.steps[first + i], left, right);
+    for (const TreadScan& t : scans) applyScan(t, p, stairs.steps[t.step], left, right);
     stairs.left_side = left.result();
     stairs.right_side = right.result();
     estimateGeometry(stairs);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "core/StairDetector.h"
 #include "core/StaircaseGeometry.h"
 #include "support/SyntheticScenes.h"
@@ -82,6 +84,20 @@ TEST(StepExtent, EmptyCloudAndTinyStaircasesChangeNothing) {
     Staircase empty;
     measureStepExtents(flightCloud(-kHalfWidth, true, true), empty);
     EXPECT_TRUE(empty.steps.empty());
+}
+
+TEST(StepExtent, DegenerateEdgesAndNonFinitePointsAreSkipped) {
+    Staircase s = pieces();
+    s.steps[2].end = s.steps[2].start;  // zero length: no direction to measure along
+    PointCloud cloud = flightCloud(-kHalfWidth, true, true);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    cloud.emplace_back(nan, 0.0f, 0.0f);
+    cloud.emplace_back(2.5f, nan, -0.1f);
+    measureStepExtents(cloud, s);
+    EXPECT_NEAR(s.steps[2].length(), 0.0, 1e-12);
+    EXPECT_NEAR(s.steps[1].length(), 2 * kHalfWidth, 0.08);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Open);
 }
 
 TEST(StepExtent, DetectorReportsSidesAndFullWidthOnARayCastScene) {
