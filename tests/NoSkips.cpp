@@ -2,8 +2,8 @@
 //
 // Why: gtest reports every test of a suite whose SetUpTestSuite failed as skipped (not failed),
 // and ctest (gtest_discover_tests) counts "[  SKIPPED ]" as Skipped, which does not fail the
-// run. So a broken setup hid as six skips. No stairmap test may pass by skipping, GTEST_SKIP
-// included. The listener sees each test's end before the result printer does (gtest calls
+// run. So a broken setup hid as six skips. No stairmap test may pass by skipping, an explicit
+// skip included. The listener sees each test's end before the result printer does (gtest calls
 // OnTestEnd in reverse order of registration), while the test is still current, so the
 // failure added here is what gets printed and counted. Regression test: tests/meta.
 #include <gtest/gtest.h>

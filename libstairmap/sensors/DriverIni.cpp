@@ -1,6 +1,6 @@
 #include "sensors/DriverIni.h"
 
-#include "sensors/MrptErrorText.h"
+#include "io/rawlog/MrptErrorText.h"
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -63,7 +63,7 @@ std::vector<DriverSection> readDriverSections(const std::string& ini_path) {
     } catch (const std::runtime_error&) {
         throw;
     } catch (const std::exception& e) {  // MRPT's parser: a malformed value or line
-        throw std::runtime_error(ini_path + ": " + mrptErrorText(e));
+        throw std::runtime_error(ini_path + ": " + io::mrptErrorText(e));
     }
     if (out.empty()) throw std::runtime_error(ini_path + ": no sensor section (e.g. [LIDAR] with driver = CVelodyneScanner)");
     return out;

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "sensors/MrptErrorText.h"
+#include "io/rawlog/MrptErrorText.h"
 
 namespace stairmap::sensors {
 
@@ -30,7 +30,7 @@ CGenericSensor::Ptr createDriver(const DriverSection& s) {
     try {
         sensor = CGenericSensor::createSensorPtr(s.driver);
     } catch (const std::exception& e) {
-        throw std::runtime_error(s.identity() + ": driver '" + s.driver + "' could not be created: " + mrptErrorText(e));
+        throw std::runtime_error(s.identity() + ": driver '" + s.driver + "' could not be created: " + io::mrptErrorText(e));
     }
     if (!sensor) {
         throw std::runtime_error(s.identity() + ": driver '" + s.driver +
@@ -66,7 +66,7 @@ SensorDriver::SensorDriver(const DriverSection& section)
         const mrpt::config::CConfigFile cfg(section_.ini_path);
         impl_->sensor->loadConfig(cfg, section_.section);
     } catch (const std::exception& e) {
-        throw std::runtime_error(section_.identity() + ": " + section_.driver + " rejected its configuration: " + mrptErrorText(e));
+        throw std::runtime_error(section_.identity() + ": " + section_.driver + " rejected its configuration: " + io::mrptErrorText(e));
     }
     if (impl_->velodyne) {
         impl_->velodyne->setPCAPVerbosity(false);
@@ -78,7 +78,7 @@ SensorDriver::SensorDriver(const DriverSection& section)
     try {
         impl_->sensor->initialize();
     } catch (const std::exception& e) {
-        throw std::runtime_error(section_.identity() + ": " + section_.driver + " failed to initialise: " + mrptErrorText(e));
+        throw std::runtime_error(section_.identity() + ": " + section_.driver + " failed to initialise: " + io::mrptErrorText(e));
     }
 }
 

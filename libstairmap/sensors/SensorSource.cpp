@@ -12,7 +12,7 @@
 
 #include "io/rawlog/PoseConversion.h"
 #include "io/follow/GrowingTum.h"
-#include "sensors/MrptErrorText.h"
+#include "io/rawlog/MrptErrorText.h"
 #include "sensors/SensorDriver.h"
 
 namespace stairmap::sensors {
@@ -169,7 +169,7 @@ void SensorSource::driverLoop(SensorDriver& driver) {
         }
     } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(inbox_mutex_);
-        errors_.push_back(driver.section().identity() + ": " + driver.section().driver + " failed: " + mrptErrorText(e));
+        errors_.push_back(driver.section().identity() + ": " + driver.section().driver + " failed: " + io::mrptErrorText(e));
     }
     --running_;
     inbox_cv_.notify_one();

@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "io/rawlog/GuardedReadObject.h"
+#include "io/rawlog/MrptErrorText.h"
 #include "io/rawlog/PoseConversion.h"
 #include "io/rawlog/RobotPoseMatcher.h"
 
@@ -24,17 +25,6 @@ namespace stairmap::io {
 namespace {
 
 using mrpt::obs::CObservation;
-
-// MRPT exceptions span many lines; keep the one that says what went wrong.
-std::string shortReason(const std::exception& e) {
-    const std::string what = e.what();
-    const auto msg = what.find("Message:");
-    const std::size_t start = msg == std::string::npos ? 0 : msg + 8;
-    const std::size_t end = what.find('\n', start);
-    std::string line = what.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    const auto first = line.find_first_not_of(' ');
-    return first == std::string::npos ? std::string("unknown error") : line.substr(first);
-}
 
 double stampOf(const CObservation& obs) {
     if (obs.timestamp == INVALID_TIMESTAMP) return std::nan("");
@@ -81,7 +71,7 @@ RawlogScanSource::RawlogScanSource(const std::string& path, const RawlogSourcePa
     try {
         if (!file->open(path)) throw std::runtime_error("open failed");
     } catch (const std::exception& e) {
-        throw std::runtime_error(path + ": cannot open rawlog: " + shortReason(e));
+        throw std::runtime_error(path + ": cannot open rawlog: " + mrptErrorText(e));
     }
     impl_->stream = std::move(file);
     impl_->archive = mrpt::serialization::archiveUniquePtrFrom(*impl_->stream);
@@ -157,7 +147,7 @@ void RawlogScanSource::handleScan(const mrpt::obs::CObservation& obs, double sta
     } catch (const std::exception& e) {
         converted.convertible = false;
         converted.type_name = obs.GetRuntimeClass()->className;
-        converted.reason = shortReason(e);
+        converted.reason = mrptErrorText(e);
     }
     if (!converted.convertible) {
         ++stats_.conversion_failed;
@@ -243,7 +233,7 @@ void RawlogScanSource::readOneObject() {
         }
         impl_->error = path_ + ": truncated or corrupt at object index " +
                        std::to_string(stats_.objects_read) + " (scan index " +
-                       std::to_string(stats_.scans_read) + "): " + shortReason(e);
+                       std::to_string(stats_.scans_read) + "): " + mrptErrorText(e);
         return;
     }
     ++stats_.objects_read;

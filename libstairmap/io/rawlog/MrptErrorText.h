@@ -1,11 +1,11 @@
 #pragma once
 // MRPT exceptions span many lines (message, location, call stack); keep the line that says what
-// went wrong, for one-line error messages.
+// went wrong, for one-line error messages (rawlog reading, sensor drivers).
 
 #include <exception>
 #include <string>
 
-namespace stairmap::sensors {
+namespace stairmap::io {
 
 inline std::string mrptErrorText(const std::exception& e) {
     const std::string what = e.what();
@@ -17,4 +17,4 @@ inline std::string mrptErrorText(const std::exception& e) {
     return first == std::string::npos ? std::string("unknown error") : line.substr(first);
 }
 
-}  // namespace stairmap::sensors
+}  // namespace stairmap::io
