@@ -17,6 +17,7 @@
 #include "core/StepExtent.h"
 #include "core/StaircaseGeometry.h"
 #include "core/TopView.h"
+#include "core/TreadHeights.h"
 
 namespace stairmap {
 namespace {
@@ -139,8 +140,20 @@ void recordDirection(const std::vector<LineSegment>& lines, const std::vector<ch
     explainRefusedPairs(lines, used, dir, floor_z, p, debug.rejected);
 }
 
-void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, double floor_z,
-                     const DetectorParams& p, std::vector<Staircase>& out, DetectorDebug* debug) {
+/// Sparse-cloud mode, ascending: edges read on riser tops are raised to the treads behind them
+/// (TreadHeights), then the remaining low ones onto the flight's nosing line (RiserHits).
+void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
+                          std::vector<LineSegment>& edges) {
+    if (dir == StairDirection::Ascending && edges.size() >= 2) {
+        const Staircase probe = makeStaircase(edges, dir, 0.0);
+        raiseEdgesToTreads(cloud, probe.step_height, probe.step_depth, edges);
+    }
+    raiseLowEdges(edges, kRiserHitMinDrop);
+}
+
+void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
+                     StairDirection dir, double floor_z, const DetectorParams& p,
+                     std::vector<Staircase>& out, DetectorDebug* debug) {
     const bool up = dir == StairDirection::Ascending;
     std::vector<LineSegment> lines = extractLines(cells, up ? kFrontDrop : kBackDrop, floor_z, p);
     if (!up) {
@@ -166,7 +179,7 @@ void detectDirection(const std::vector<TopViewCell>& cells, StairDirection dir, 
         }
         fillMissingNosings(edges);  // edges the search stepped over
         // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
-        if (p.edge_height_tolerance_m > 0) raiseLowEdges(edges, kRiserHitMinDrop);
+        if (p.edge_height_tolerance_m > 0) correctRiserTopEdges(cloud, dir, edges);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
         if (static_cast<int>(edges.size()) < p.min_steps) {
             if (debug && debug->rejected.size() < DetectorDebug::kMaxRejected)
@@ -208,10 +221,10 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (debug) debug->candidates = cells;
 
     if (params_.detect_ascending)
-        detectDirection(cells, StairDirection::Ascending, floor, params_, result.staircases,
+        detectDirection(cloud_robot, cells, StairDirection::Ascending, floor, params_, result.staircases,
                         debug);
     if (params_.detect_descending)
-        detectDirection(cells, StairDirection::Descending, floor, params_, result.staircases,
+        detectDirection(cloud_robot, cells, StairDirection::Descending, floor, params_, result.staircases,
                         debug);
     mergeOverlappingFlights(result.staircases);  // Algorithm 2 on the detector's own chains
     FlightJoinParams jp;
