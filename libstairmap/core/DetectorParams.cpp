@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/TopView.h"
+
 namespace stairmap {
 namespace {
 
@@ -22,9 +24,9 @@ void requireLess(double lo, double hi, const char* field_lo, const char* field_h
     }
 }
 
-/// Grid columns beyond 2 max_range / leaf: padding of kPad + 1 empty columns per side plus one
-/// spare column for float rounding (TopView.cpp).
-constexpr double kGridPadColumns = 10.0;
+/// Grid columns beyond 2 max_range / leaf: padding of kMaxNeighbourWalk + 1 empty columns per
+/// side plus one spare column for float rounding (TopView.cpp).
+constexpr double kGridPadColumns = 2.0 * (kMaxNeighbourWalk + 1) + 1.0;
 
 void requireGridBudget(const DetectorParams& p) {
     if (p.topViewGridBytes() <= static_cast<double>(kMaxTopViewGridBytes)) return;
@@ -55,6 +57,7 @@ void DetectorParams::validate() const {
     requireRange(azimuth_bins, 36, 100000, "azimuth_bins");
     requireRange(edge_min_dz_m, 0.0, 1.0, "edge_min_dz_m");
     requireRange(edge_spill_dz_m, 0.0, 1.0, "edge_spill_dz_m");
+    requireRange(neighbour_walk_m, 0.001, 1.0, "neighbour_walk_m");
     requireRange(split_distance_m, 1e-4, 1.0, "split_distance_m");
     requireRange(min_line_points, 2, 100000, "min_line_points");
     requireRange(min_line_length_m, 0.0, 10.0, "min_line_length_m");

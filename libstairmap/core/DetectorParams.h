@@ -17,7 +17,7 @@ struct DetectorParams {
     // --- Pre-processing (Sec. III-A) ---
     double leaf_size_m = 0.025;            ///< [m] voxel / top-view XY cell size (paper Sec. IV-A)
     /// [m] points farther than this in XY are ignored. Bounded with leaf_size_m by the grid budget
-    /// kMaxTopViewGridBytes: at most 51 m at 2.5 cm, 20 m at 1 cm, 10 m at 5 mm.
+    /// kMaxTopViewGridBytes: at most 50.9 m at 2.5 cm, 20.3 m at 1 cm, 10.1 m at 5 mm.
     double max_range_m = 10.0;
     double max_height_above_floor_m = 3.0; ///< [m] points higher above the floor are ignored
     double max_depth_below_floor_m = 3.0;  ///< [m] points lower below the floor are ignored
@@ -29,6 +29,13 @@ struct DetectorParams {
     /// [m] ...but not when the neighbour on the other side is higher than this: that column is the
     /// top of a riser just below the real nosing (points spilled there by noise).
     double edge_spill_dz_m = 0.025;
+    /// [m] how far along the ray the top view looks for a column's neighbour; nothing within it
+    /// counts as a drop (a shadow, an edge). Longer than the holes of the coarsest cloud: 20 cm,
+    /// the gap that also cuts a row into lines; 7.5 cm took the holes of elevation maps' 4 cm
+    /// cells and far rings for drops, whose stray lines broke real flights (dev set: elevation
+    /// maps 59 -> 68 of 75 flights). At most 8 columns. The mapping presets keep 0.075: their
+    /// accumulated submaps have no such holes, and tests of their landmarks were validated so.
+    double neighbour_walk_m = 0.20;
 
     // --- Segmentation (Sec. III-B) ---
     double split_distance_m = 0.03;   ///< [m] d_p of the iterative end-point fit

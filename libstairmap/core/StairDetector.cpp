@@ -212,6 +212,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     tp.z_hi = floor + params_.max_height_above_floor_m;
     tp.edge_min_dz_m = params_.edge_min_dz_m;
     tp.edge_spill_dz_m = params_.edge_spill_dz_m;
+    tp.neighbour_walk_m = params_.neighbour_walk_m;
     tp.edge_spill_max_dz_m = params_.min_step_height_m;
     tp.ground_z_lo = floor - params_.floor_tolerance_m;
     tp.ground_z_hi = floor + params_.floor_tolerance_m;

@@ -94,13 +94,9 @@ GridBox boundingGrid(const PointCloud& cloud, const TopViewParams& p, int pad) {
     return box;
 }
 
-/// Empty columns skipped (and grid padding) for the neighbour look-up: 20 cm at the 2.5 cm leaf,
-/// the gap that also cuts a row into separate lines (max_point_gap_m). Shorter walks (3 columns)
-/// took the holes of clouds coarser than the columns (elevation maps' 4 cm cells, far rings) for
-/// drops: candidates all over flat treads, whose stray lines broke the real flights' chains (dev
-/// set, elevation maps: 59 -> 68 of 75 flights). A real drop's lower side or shadow is found
-/// either way; only "nothing within the walk" changes meaning.
-constexpr int kPad = 8;
+/// Longest walk of empty columns (and grid padding) for the neighbour look-up; the walk itself is
+/// TopViewParams::neighbour_walk_m (DetectorParams documents the choice).
+constexpr int kPad = kMaxNeighbourWalk;
 
 /// One column of the grid in one 64-bit word: the highest point's height in quanta above z_lo in
 /// the high 32 bits (0 = empty column; a quantum is 3 nm for a 6 m band), then its position inside
@@ -203,13 +199,13 @@ struct Neighbourhood {
     int first_z = 0;    ///< nearest occupied column
 };
 
-/// Walks up to kPad columns along the offsets (sign -1: towards the robot). Empty columns of a
+/// Walks up to `walk` (<= kPad) columns along the offsets (sign -1: towards the robot). Empty columns of a
 /// sparse cloud are skipped; nothing at all counts as a drop; a much higher column (a wall beside
 /// the edge's end) is looked past; a column at about the same level ends the walk without a drop.
-inline Neighbourhood inspect(const Column* grid, int col, const int (&offsets)[kPad], int sign,
-                             int z_drop, int z_wall) {
+inline Neighbourhood inspect(const Column* grid, int col, const int (&offsets)[kPad], int walk,
+                             int sign, int z_drop, int z_wall) {
     Neighbourhood n;
-    for (int k = 0; k < kPad; ++k) {
+    for (int k = 0; k < walk; ++k) {
         const int z = grid[col + sign * offsets[k]].z_q();
         if (z == 0) continue;
         if (n.first_z == 0) n.first_z = z;
@@ -226,6 +222,7 @@ inline Neighbourhood inspect(const Column* grid, int col, const int (&offsets)[k
 /// Thresholds of the classification, in height quanta.
 struct Thresholds {
     int min_dz, spill_dz, spill_max, ground_lo, ground_hi;
+    int walk;  ///< columns of the neighbour walk, 1..kPad
 };
 
 /// Quanta of a height that may lie outside [z_lo, z_hi] (clamped to 0 .. kMaxQuanta + 1).
@@ -244,8 +241,8 @@ std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy,
     const int z_drop = z - t.min_dz, lo = z + t.spill_dz, hi = z + t.spill_max;
     const bool ground = z > t.ground_lo && z < t.ground_hi;
     Neighbourhood front;  // not needed in the ground band: no drop, no spill
-    if (!ground) front = inspect(grid, col, offsets, -1, z_drop, hi);
-    const Neighbourhood back = inspect(grid, col, offsets, +1, z_drop, hi);
+    if (!ground) front = inspect(grid, col, offsets, t.walk, -1, z_drop, hi);
+    const Neighbourhood back = inspect(grid, col, offsets, t.walk, +1, z_drop, hi);
     // A drop on one side with a slightly higher column on the other side is the top of a riser
     // just below the real nosing (noise spill): not a nosing. A much higher column (a wall, the
     // floor above) does not count.
@@ -272,6 +269,7 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p,
     highestPoints(cloud, p, box, code, grid.data());
     Thresholds t;
     t.min_dz = code.quanta(p.edge_min_dz_m);
+    t.walk = std::clamp(static_cast<int>(std::lround(p.neighbour_walk_m / p.leaf_m)), 1, kPad);
     t.spill_dz = code.quanta(p.edge_spill_dz_m);
     t.spill_max = code.quanta(p.edge_spill_max_dz_m);
     t.ground_lo = codeClamped(code, p.ground_z_lo);

@@ -23,6 +23,9 @@ struct TopViewCell {
     std::uint8_t flags;   ///< TopViewFlag bits
 };
 
+/// [-] longest neighbour walk in columns (also the grid's padding)
+constexpr int kMaxNeighbourWalk = 8;
+
 struct TopViewParams {
     double leaf_m = 0.025;      ///< [m] column size
     double max_range_m = 10.0;  ///< [m] XY range limit
@@ -33,6 +36,9 @@ struct TopViewParams {
     /// just below the nosing (points spilled by noise) and is not a nosing
     double edge_spill_dz_m = 0.025;
     double edge_spill_max_dz_m = 0.11;  ///< [m] ...and lower than this (higher: a wall, a floor)
+    /// [m] how far along the ray a neighbour is looked for; none within it = empty = a drop
+    /// (rounded to whole columns, 1 to kMaxNeighbourWalk)
+    double neighbour_walk_m = 0.20;
     /// [m] ground band (floor +- tolerance): only the descending (back-drop) flag is computed there,
     /// for the floor's own nosing; ascending nosings are never at floor level.
     double ground_z_lo = 0.0;

@@ -28,10 +28,10 @@ TEST(DetectorParams, DefaultsAreValidAndFollowThePaper) {
 }
 
 TEST(DetectorParams, TopViewGridBudgetBoundsRangeOverLeaf) {
-    // Worst case (2 r / leaf + 10)^2 columns of 8 bytes <= 128 MiB: r / leaf <= 2043.
+    // Worst case (2 r / leaf + 19)^2 columns of 8 bytes <= 128 MiB: r / leaf <= 2038.
     DetectorParams p;
-    EXPECT_NEAR(p.topViewGridBytes(), 810.0 * 810.0 * 8.0, 1.0);  // 10 m at 2.5 cm: 5.2 MB
-    for (const auto& [range, leaf] : {std::pair{51.0, 0.025}, std::pair{20.4, 0.01}, std::pair{10.2, 0.005},
+    EXPECT_NEAR(p.topViewGridBytes(), 819.0 * 819.0 * 8.0, 1.0);  // 10 m at 2.5 cm: 5.4 MB
+    for (const auto& [range, leaf] : {std::pair{50.9, 0.025}, std::pair{20.3, 0.01}, std::pair{10.1, 0.005},
                                       std::pair{200.0, 0.2}}) {
         p.max_range_m = range;
         p.leaf_size_m = leaf;
@@ -52,7 +52,7 @@ TEST(DetectorParams, GridBudgetErrorSaysWhatFits) {
         const std::string what = e.what();
         EXPECT_NE(what.find("max_range_m = 200"), std::string::npos) << what;
         EXPECT_NE(what.find("leaf_size_m"), std::string::npos) << what;
-        EXPECT_NE(what.find("max_range_m <= 51.0"), std::string::npos) << what;
+        EXPECT_NE(what.find("max_range_m <= 50.9"), std::string::npos) << what;
     }
 }
 

@@ -77,17 +77,25 @@ TEST(TopView, ACoarseGridIsOneSurfaceNotADropAtEveryHole) {
     for (float x = 1.02f; x < 4.0f; x += 0.04f)
         for (float y = -0.98f; y < 1.0f; y += 0.04f)
             cloud.emplace_back(x, y, x < 2.0f ? kFloorZ : kFloorZ + 0.20f);
-    std::vector<TopViewCell> cells;
-    buildTopView(cloud, stepParams(), cells);
+    auto count = [&](double walk_m, int& inside, int& near_edge) {
+        TopViewParams p = stepParams();
+        p.neighbour_walk_m = walk_m;
+        std::vector<TopViewCell> cells;
+        buildTopView(cloud, p, cells);
+        inside = near_edge = 0;
+        for (const auto& c : cells) {
+            if (c.z < kFloorZ + 0.1f) continue;  // the floor's own back drops (its far end) aside
+            if (c.x > 2.3f && c.x < 3.7f && std::abs(c.y) < 0.7f) ++inside;
+            if ((c.flags & kFrontDrop) && c.x < 2.05f) ++near_edge;
+        }
+    };
     int inside = 0, near_edge = 0;
-    for (const auto& c : cells) {
-        if (c.z < kFloorZ + 0.1f) continue;  // the floor's own back drops (its far end) aside
-        const bool interior = c.x > 2.3f && c.x < 3.7f && std::abs(c.y) < 0.7f;
-        if (interior) ++inside;
-        if ((c.flags & kFrontDrop) && c.x < 2.05f) ++near_edge;
-    }
+    count(0.20, inside, near_edge);  // the default walk
     EXPECT_EQ(inside, 0);
     EXPECT_GE(near_edge, 40);  // the 2 m near edge: about 50 cells of 4 cm
+    count(0.075, inside, near_edge);  // three columns: holes are taken for drops
+    EXPECT_GT(inside, 5);
+    EXPECT_GE(near_edge, 40);
 }
 
 TEST(TopView, EachCandidateIsTheHighestPointOfItsColumn) {

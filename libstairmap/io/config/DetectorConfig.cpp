@@ -81,6 +81,7 @@ void readPreprocessing(const SectionReader& r, DetectorParams& p) {
     r.integer("azimuth_bins", p.azimuth_bins);
     r.number("edge_min_dz_m", p.edge_min_dz_m);
     r.number("edge_spill_dz_m", p.edge_spill_dz_m);
+    r.number("neighbour_walk_m", p.neighbour_walk_m);
 }
 
 void readSegmentation(const SectionReader& r, DetectorParams& p) {

@@ -64,6 +64,7 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_DOUBLE_EQ(c.params.min_step_height_m, d.min_step_height_m);
     EXPECT_DOUBLE_EQ(c.params.max_step_depth_m, d.max_step_depth_m);
     EXPECT_DOUBLE_EQ(c.params.edge_spill_dz_m, d.edge_spill_dz_m);
+    EXPECT_DOUBLE_EQ(c.params.neighbour_walk_m, d.neighbour_walk_m);
     EXPECT_DOUBLE_EQ(c.params.max_collinear_gap_m, d.max_collinear_gap_m);
     EXPECT_EQ(c.params.azimuth_bins, d.azimuth_bins);
     EXPECT_EQ(c.params.min_steps, d.min_steps);
