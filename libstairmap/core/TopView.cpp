@@ -94,7 +94,11 @@ GridBox boundingGrid(const PointCloud& cloud, const TopViewParams& p, int pad) {
     return box;
 }
 
-constexpr int kPad = 3;  ///< empty columns skipped (and grid padding) for the neighbour look-up
+/// Columns looked at (and grid padding) for the radial neighbour look-up: 15 cm. A depth camera's
+/// far treads and an elevation map's shadowed cells are sampled in rows up to ~12 cm apart along
+/// the ray; a shorter walk read every such gap as a drop, so each row of tread points became a
+/// nosing candidate (noise lines that broke and blocked the real nosings).
+constexpr int kPad = 6;
 
 /// One column of the grid in one 64-bit word: the highest point's height in quanta above z_lo in
 /// the high 32 bits (0 = empty column; a quantum is 3 nm for a 6 m band), then its position inside
