@@ -22,9 +22,9 @@ void requireLess(double lo, double hi, const char* field_lo, const char* field_h
     }
 }
 
-/// Grid columns beyond 2 max_range / leaf: padding of kPad + 1 = 7 empty columns per side plus
-/// spare columns for float rounding (TopView.cpp).
-constexpr double kGridPadColumns = 16.0;
+/// Grid columns beyond 2 max_range / leaf: padding of kPad + 1 empty columns per side plus one
+/// spare column for float rounding (TopView.cpp).
+constexpr double kGridPadColumns = 10.0;
 
 void requireGridBudget(const DetectorParams& p) {
     if (p.topViewGridBytes() <= static_cast<double>(kMaxTopViewGridBytes)) return;

@@ -9,8 +9,8 @@ namespace stairmap {
 
 /// [bytes] memory budget of the detector's top-view grid (TopView.h). The grid covers the points'
 /// XY bounding box cropped to +-max_range_m (points beyond are dropped, never gridded), so its
-/// worst case is (2 max_range_m / leaf_size_m + 16)^2 columns of 8 bytes; validate() rejects
-/// configurations whose worst case exceeds this. Defaults (10 m, 2.5 cm): 5.3 MB.
+/// worst case is (2 max_range_m / leaf_size_m + 10)^2 columns of 8 bytes; validate() rejects
+/// configurations whose worst case exceeds this. Defaults (10 m, 2.5 cm): 5.2 MB.
 constexpr std::size_t kMaxTopViewGridBytes = std::size_t{128} << 20;
 
 struct DetectorParams {

@@ -3,9 +3,9 @@
 // leaf x leaf metres only the highest point is kept, so vertical planes (risers, walls) collapse
 // onto their top edge.
 // Then every column is classified against its radial neighbours (towards / away from the robot):
-// a nosing is where the surface drops by more than edge_min_dz_m (or ends). Up to 5 empty columns
-// (holes of a sparse cloud, rows of a far depth-camera tread) are skipped when looking for the
-// neighbour; 6 empty columns (15 cm) count as a drop.
+// a nosing is where the surface drops by more than edge_min_dz_m (or ends). Up to 7 empty columns
+// (holes of a sparse cloud, the rows of a far depth-camera tread) are skipped when looking for the
+// neighbour; 8 empty columns (20 cm) count as a drop.
 
 #include <cstdint>
 #include <vector>
@@ -44,7 +44,7 @@ struct TopViewParams {
 /// are nosing candidates (flags != 0) into `cells`, which is cleared first. Non-finite points are ignored.
 /// Cost: two passes over the cloud plus one over a flat XY array spanning the points' bounding box
 /// cropped to +-max_range_m (no hashing, no sorting of points). Memory: that array, 8 bytes per
-/// leaf x leaf column, at most (2 max_range_m / leaf_m + 16)^2 x 8 bytes whatever the cloud
+/// leaf x leaf column, at most (2 max_range_m / leaf_m + 10)^2 x 8 bytes whatever the cloud
 /// (DetectorParams::validate bounds it by kMaxTopViewGridBytes), plus 16 bytes per candidate.
 void buildTopView(const PointCloud& cloud, const TopViewParams& params,
                   std::vector<TopViewCell>& cells);

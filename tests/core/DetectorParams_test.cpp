@@ -28,9 +28,9 @@ TEST(DetectorParams, DefaultsAreValidAndFollowThePaper) {
 }
 
 TEST(DetectorParams, TopViewGridBudgetBoundsRangeOverLeaf) {
-    // Worst case (2 r / leaf + 16)^2 columns of 8 bytes <= 128 MiB: r / leaf <= 2040.
+    // Worst case (2 r / leaf + 10)^2 columns of 8 bytes <= 128 MiB: r / leaf <= 2043.
     DetectorParams p;
-    EXPECT_NEAR(p.topViewGridBytes(), 816.0 * 816.0 * 8.0, 1.0);  // 10 m at 2.5 cm: 5.3 MB
+    EXPECT_NEAR(p.topViewGridBytes(), 810.0 * 810.0 * 8.0, 1.0);  // 10 m at 2.5 cm: 5.2 MB
     for (const auto& [range, leaf] : {std::pair{51.0, 0.025}, std::pair{20.4, 0.01}, std::pair{10.2, 0.005},
                                       std::pair{200.0, 0.2}}) {
         p.max_range_m = range;
