@@ -55,6 +55,41 @@ TEST(TopView, FrontDropsMarkTheNosingAndNothingInsideTheTread) {
     EXPECT_LE(nosing, 56);
 }
 
+/// The step of stepCloud(), but the tread sampled as a far depth camera sees it: rows of points
+/// across the ray 12.5 cm apart (pixel rows at a grazing angle), 4 empty columns between them.
+PointCloud rowSampledStepCloud() {
+    PointCloud cloud;
+    int k = 0;
+    for (const auto& p : stepCloud()) {
+        if (p.x() < kStepX) cloud.push_back(p);  // the floor stays densely sampled
+    }
+    for (int row = 0; kStepX + 0.0113f + 0.125f * row < kEndX; ++row) {
+        for (int j = 0; j < 120; ++j) {
+            const float x = kStepX + 0.0113f + 0.125f * row, y = -0.5987f + 0.01f * j;
+            cloud.emplace_back(x, y, kTreadZ + 1e-6f * static_cast<float>(k++ % 97));
+        }
+    }
+    return cloud;
+}
+
+TEST(TopView, GapsBetweenRowsOfATreadAreNoDrops) {
+    std::vector<TopViewCell> cells;
+    buildTopView(rowSampledStepCloud(), stepParams(), cells);
+    int nosing = 0, inside = 0;
+    for (const auto& c : cells) {
+        if (!(c.flags & kFrontDrop) || std::abs(c.y) > 0.5f) continue;
+        // The rows behind the first one continue the tread at its height 12.5 cm further on: no
+        // surface drops towards the robot there, only at the real step.
+        if (c.x < kStepX + 0.05f) {
+            ++nosing;
+        } else {
+            ++inside;
+        }
+    }
+    EXPECT_EQ(inside, 0);
+    EXPECT_GE(nosing, 30);  // 1 m of edge (|y| < 0.5): 40 columns
+}
+
 TEST(TopView, BackDropsMarkTheFarEndsAndTheFloorIsNoAscendingNosing) {
     std::vector<TopViewCell> cells;
     buildTopView(stepCloud(), stepParams(), cells);
