@@ -3,9 +3,10 @@
 // leaf x leaf metres only the highest point is kept, so vertical planes (risers, walls) collapse
 // onto their top edge.
 // Then every column is classified against its radial neighbours (towards / away from the robot):
-// a nosing is where the surface drops by more than edge_min_dz_m (or ends). Up to 7 empty columns
-// (holes of a sparse cloud, the rows of a far depth-camera tread) are skipped when looking for the
-// neighbour; 8 empty columns (20 cm) count as a drop.
+// a nosing is where the surface drops by more than edge_min_dz_m (or ends). Empty columns (holes
+// of a sparse or coarse cloud, the rows of a far depth-camera tread) are skipped when looking for
+// the neighbour, up to neighbour_walk_m (default 20 cm, at most 8 columns); none within it counts
+// as a drop.
 
 #include <cstdint>
 #include <vector>
