@@ -95,13 +95,13 @@ bool refitHelix(const SpiralLines& sl, const std::vector<Radial>& in, Helix& h) 
     return true;
 }
 
-/// One seen level: the longest inlier line at that height.
+/// One seen level: the highest inlier line at that height (a riser hit reads low).
 std::vector<Radial> levelsOf(std::vector<Radial> in, double tolerance) {
     std::sort(in.begin(), in.end(), [](const Radial& a, const Radial& b) { return a.z < b.z; });
     std::vector<Radial> levels;
     for (const Radial& r : in) {
         if (!levels.empty() && r.z - levels.back().z < tolerance) {
-            if (r.far - r.near > levels.back().far - levels.back().near) levels.back() = r;
+            if (r.z > levels.back().z) levels.back() = r;  // a riser hit reads low
             continue;
         }
         levels.push_back(r);
