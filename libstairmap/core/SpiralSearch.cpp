@@ -234,9 +234,11 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
     if (first_z < p.min_first_height_m || first_z > p.max_first_height_m) return f;
     const double step_angle = std::abs(h.omega) * rise;
     if (step_angle < p.min_step_angle_deg * kDeg || step_angle > p.max_step_angle_deg * kDeg) return f;
-    std::vector<double> mids, outers;
-    for (const auto& [k, r] : idx) mids.push_back(0.5 * (r.near + r.far)), outers.push_back(r.far);
-    const double run = 2.0 * median(mids) * std::sin(0.5 * step_angle);  // chord at mid radius
+    std::vector<double> outers;
+    double inner = 1e9;
+    for (const auto& [k, r] : idx) outers.push_back(r.far), inner = std::min(inner, r.near);
+    const double outer = median(outers);
+    const double run = (inner + outer) * std::sin(0.5 * step_angle);  // chord at mid radius
     if (run < p.min_run_m || run > p.max_run_m) return f;
     for (std::size_t i = 0; i < idx.size(); ++i) {
         if (i > 0) {  // levels between two seen ones: on the helix, radii interpolated
@@ -253,7 +255,10 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
         f.edges.push_back(turned(sl[r.index], h.axis, r.rot));
     }
     f.axis = h.axis;
-    f.outer_radius_m = median(outers);
+    f.outer_radius_m = outer;
+    f.inner_radius_m = inner;
+    f.step_angle_rad = step_angle;
+    f.run_m = run;
     f.seen_levels = static_cast<int>(idx.size());
     return f;
 }

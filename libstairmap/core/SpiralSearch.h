@@ -50,6 +50,11 @@ struct SpiralFlight {
     std::vector<LineSegment> edges;
     Eigen::Vector2d axis = Eigen::Vector2d::Zero();  ///< [m] XY of the column's axis
     double outer_radius_m = 0.0;                     ///< [m] median outer end distance to the axis
+    double inner_radius_m = 0.0;                     ///< [m] nearest inner end to the axis (column)
+    double step_angle_rad = 0.0;                     ///< [rad] turn per step (> 0)
+    /// [m] chord between consecutive nosings' centres (mid radius): the run of a turning flight,
+    /// independent of how much of each nosing was seen
+    double run_m = 0.0;
     int seen_levels = 0;                             ///< levels with a line of their own
 };
 

@@ -195,7 +195,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
 }
 
 /// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
-/// steps (in its column's radius and height range) unless one of them has more steps.
+/// steps (in its column's radius and height range) unless one of them has as many steps or more.
 void addSpiralFlights(const std::vector<LineSegment>& front_drops,
                       const std::vector<LineSegment>& back_drops, double floor_z,
                       const DetectorParams& p, std::vector<Staircase>& out) {
@@ -221,10 +221,12 @@ void addSpiralFlights(const std::vector<LineSegment>& front_drops,
             return 2 * inside > static_cast<int>(s.steps.size());
         };
         bool longer_chain = false;
-        for (const Staircase& s : out) longer_chain |= onSpiral(s) && s.steps.size() > f.edges.size();
+        for (const Staircase& s : out) longer_chain |= onSpiral(s) && s.steps.size() >= f.edges.size();
         if (longer_chain) continue;
         out.erase(std::remove_if(out.begin(), out.end(), onSpiral), out.end());
         out.push_back(makeStaircase(f.edges, StairDirection::Ascending, 0.5 * p.leaf_size_m));
+        out.back().step_depth = f.run_m;  // at mid radius, not where the edges were seen
+        out.back().slope_rad = std::atan2(out.back().step_height, f.run_m);
     }
 }
 
