@@ -334,7 +334,13 @@ std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drop
         SpiralFlight f = bestSpiral(sl, used, params, inliers);
         if (f.edges.empty()) break;
         for (int k : inliers) used[k] = 1;
-        out.push_back(std::move(f));
+        // The remaining lines (the other drop's copies of the nosings, pieces) may give the same
+        // spiral again, better seen: one spiral per footprint, the one with more levels.
+        auto same = std::find_if(out.begin(), out.end(), [&](const SpiralFlight& o) {
+            return (o.axis - f.axis).norm() < std::min(o.outer_radius_m, f.outer_radius_m);
+        });
+        if (same == out.end()) out.push_back(std::move(f));
+        else if (f.edges.size() > same->edges.size()) *same = std::move(f);
     }
     return out;
 }

@@ -195,7 +195,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
 }
 
 /// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
-/// steps (in its column's radius and height range) unless one of them has as many steps or more.
+/// steps (in its column's radius and height range) unless one of them has more steps.
 void addSpiralFlights(const std::vector<LineSegment>& front_drops,
                       const std::vector<LineSegment>& back_drops, double floor_z,
                       const DetectorParams& p, std::vector<Staircase>& out) {
@@ -221,7 +221,7 @@ void addSpiralFlights(const std::vector<LineSegment>& front_drops,
             return 2 * inside > static_cast<int>(s.steps.size());
         };
         bool longer_chain = false;
-        for (const Staircase& s : out) longer_chain |= onSpiral(s) && s.steps.size() >= f.edges.size();
+        for (const Staircase& s : out) longer_chain |= onSpiral(s) && s.steps.size() > f.edges.size();
         if (longer_chain) continue;
         out.erase(std::remove_if(out.begin(), out.end(), onSpiral), out.end());
         out.push_back(makeStaircase(f.edges, StairDirection::Ascending, 0.5 * p.leaf_size_m));
@@ -266,13 +266,14 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (params_.detect_descending)
         detectDirection(cloud_robot, cells, StairDirection::Descending, floor, params_, result.staircases,
                         debug, back_drops);
-    if (params_.detect_ascending)
-        addSpiralFlights(front_drops, back_drops, floor, params_, result.staircases);
     mergeOverlappingFlights(result.staircases);  // Algorithm 2 on the detector's own chains
     FlightJoinParams jp;
     jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
     jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);
     joinContinuedFlights(result.staircases, jp);
+    // After the merges: a spiral's run is its chord at mid radius, which they would re-estimate.
+    if (params_.detect_ascending)
+        addSpiralFlights(front_drops, back_drops, floor, params_, result.staircases);
     for (Staircase& s : result.staircases) measureStepExtents(cloud_robot, s);  // widths, sides
     if (debug) debug->accepted = result.staircases;
     return result;
