@@ -40,6 +40,8 @@ const char* kDetectHelp =
     "    travel up/down the flight, counter-clockwise from +x),\n"
     "    \"left_side\"|\"right_side\":\"wall\"|\"open\"|\"unseen\" (what ends the treads, looking\n"
     "    along the heading; unseen: the view does not cover it, the width may be short there),\n"
+    "    \"start_z\":m (height above the robot's floor of the surface the flight starts from:\n"
+    "    0 on the robot's floor, else a landing or platform above (+) or below (-) it),\n"
     "    \"steps\":[{\"start\":[x,y,z],\"end\":[x,y,z],...},...] (from the robot's floor outward)}],\n"
     "   \"time_ms\":t (detector only, no file reading),\"floor_z\":m,\"floor_estimated\":bool,\n"
     "   \"num_points\":n (finite points read),\n"

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "core/StaircaseGeometry.h"
+
 namespace stairmap {
 
 namespace {
@@ -48,6 +50,8 @@ PairErrors pairErrors(const Staircase& d, const StaircaseTruth& g) {
     const NosingSegment& first =
         d.direction == StairDirection::Ascending ? g.nosings.front() : g.nosings.back();
     e.location_cm = 100.0 * distanceToSegment(first, d.location);
+    const double true_start = d.direction == StairDirection::Ascending ? g.bottom_z : g.top_z;
+    if (!d.steps.empty()) e.start_cm = 100.0 * std::abs(flightStartZ(d) - true_start);
     return e;
 }
 
@@ -124,6 +128,7 @@ void accumulate(KindSummary& row, const SampleOutcome& s, const std::optional<do
         row.mae_depth_cm += e.depth_cm;
         row.mae_width_cm += e.width_cm;
         row.mae_location_cm += e.location_cm;
+        row.mae_start_cm += e.start_cm;
         if (e.both_sides_bounded) {
             ++row.bounded;
             row.mae_width_bounded_cm += e.width_cm;
@@ -141,6 +146,7 @@ void finish(KindSummary& row, int timed, double time_sum) {
         row.mae_depth_cm /= row.detections;
         row.mae_width_cm /= row.detections;
         row.mae_location_cm /= row.detections;
+        row.mae_start_cm /= row.detections;
     }
     if (row.bounded > 0) row.mae_width_bounded_cm /= row.bounded;
     if (timed > 0) row.mean_time_ms = time_sum / timed;

@@ -16,7 +16,9 @@
 // Errors of a matched pair: |step_height - rise|, |step_depth - run|, |step_width - width| [cm],
 // and the location error = distance [cm] from D.location (centre of D's first edge) to the segment
 // of the nosing D should start with: G's lowest nosing for an ascending detection, its highest
-// nosing for a descending one.
+// nosing for a descending one; the start error = |flightStartZ(D) - G's start| [cm], G's start being
+// the surface the flight starts from as D meets it: bottom_z for an ascending D, top_z for a
+// descending one (a flight off a platform or landing above or below the observer's floor too).
 
 #include <optional>
 #include <string>
@@ -46,6 +48,7 @@ struct PairErrors {
     double depth_cm = 0.0;
     double width_cm = 0.0;
     double location_cm = 0.0;
+    double start_cm = 0.0;  ///< height error of the surface the flight starts from
     /// the detection marks both sides bounded (StairSide Wall or Open): its width is complete
     bool both_sides_bounded = false;
 };
@@ -71,6 +74,7 @@ struct KindSummary {
     double mae_depth_cm = 0.0;
     double mae_width_cm = 0.0;
     double mae_location_cm = 0.0;
+    double mae_start_cm = 0.0;        ///< start height (flightStartZ) vs the truth's bottom/top
     int bounded = 0;                  ///< matched detections with both sides bounded
     double mae_width_bounded_cm = 0.0;  ///< width MAE over those (0 when none)
     std::optional<double> mean_time_ms;  ///< mean detector time per sample (Table I)

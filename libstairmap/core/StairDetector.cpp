@@ -172,7 +172,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     std::vector<int> refused;
     std::vector<char> used;
     const auto chains = searchStaircases(lines, floor_z, p.floor_tolerance_m, search,
-                                         debug ? &refused : nullptr, debug ? &used : nullptr);
+                                         debug ? &refused : nullptr, debug ? &used : nullptr, up);
     if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
     for (const auto& chain : chains) {
         std::vector<LineSegment> edges;

@@ -41,6 +41,8 @@ struct Candidate {
     std::vector<int> steps;
     Eigen::Vector2d normal;
     double rise = 0.0;  ///< [m] rise per nosing of the latest pair
+    Eigen::Vector2d first_normal = Eigen::Vector2d::Zero();  ///< of the lowest pair
+    double first_rise = 0.0;                                 ///< [m] of the lowest pair
 };
 
 /// Definition 1 for a pair of edges `steps` nosings apart (1 = consecutive): rise and run bounds
@@ -105,6 +107,52 @@ void extend(const std::vector<LineSegment>& lines, const std::vector<char>& used
     }
 }
 
+/// The edge `steps` nosings below the chain's first one: the most overlapping valid one, or -1.
+int previousEdge(const std::vector<LineSegment>& lines, const std::vector<char>& used,
+                 const DetectorParams& p, const Candidate& c, int steps) {
+    const int first = c.steps.front();
+    const double tol = std::max(p.edge_height_tolerance_m, kGapRiseTolerance) + 1e-9;
+    const double z = lines[first].z;
+    const auto [b, e] =
+        steps == 1 ? zRange(lines, z - p.max_step_height_m - p.edge_height_tolerance_m - 1e-9,
+                            z - p.min_step_height_m + p.edge_height_tolerance_m + 1e-9)
+                   : zRange(lines, z - steps * c.first_rise - tol, z - steps * c.first_rise + tol);
+    int best = -1;
+    double best_overlap = 0.0;
+    for (int j = b; j < e; ++j) {
+        if (used[j] || std::find(c.steps.begin(), c.steps.end(), j) != c.steps.end()) continue;
+        const auto pair = checkStepsApart(lines[j], lines[first], steps, c.first_rise, p);
+        if (!pair || pair->normal.dot(c.first_normal) < std::cos(p.max_parallel_deg * kDegToRad))
+            continue;
+        const double expected_z = steps == 1 ? std::numeric_limits<double>::quiet_NaN()
+                                             : 0.5 * (lines[j].z + z);
+        if (pair->overlap <= best_overlap || hasLineBetween(lines, j, first, *pair, p, expected_z))
+            continue;
+        best = j;
+        best_overlap = pair->overlap;
+    }
+    return best;
+}
+
+/// Algorithm 1 run downwards from the chain's first edge. The initialisation looks near the
+/// robot's floor, so a flight rising from a pit or a landing below that floor is found from its
+/// part above it; continuing it down to its foot reports the whole flight and where it starts
+/// (its nosing at the robot's floor level is a ground line, not searched: stepped over as an
+/// unseen nosing, like extend()).
+void extendDown(const std::vector<LineSegment>& lines, const std::vector<char>& used,
+                const DetectorParams& p, Candidate& c) {
+    for (;;) {
+        const int first = c.steps.front();
+        int steps = 1;
+        int best = previousEdge(lines, used, p, c, 1);
+        if (best < 0) best = previousEdge(lines, used, p, c, steps = 2);
+        if (best < 0) return;
+        c.first_normal = checkStepsApart(lines[best], lines[first], steps, c.first_rise, p)->normal;
+        c.first_rise = (lines[first].z - lines[best].z) / steps;
+        c.steps.insert(c.steps.begin(), best);
+    }
+}
+
 /// Algorithm 1, initialisation over the lines near the floor; returns the longest staircase.
 Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<char>& used,
                        double floor_z, double min_first, const DetectorParams& p) {
@@ -118,7 +166,7 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
             if (used[j]) continue;
             const auto pair = checkStairPair(lines[i], lines[j], p);
             if (!pair || hasLineBetween(lines, i, j, *pair, p)) continue;
-            Candidate c{{i, j}, pair->normal, pair->rise};
+            Candidate c{{i, j}, pair->normal, pair->rise, pair->normal, pair->rise};
             extend(lines, used, p, c);
             if (c.steps.size() > best.steps.size()) best = c;
         }
@@ -188,11 +236,12 @@ bool hasLineBetween(const std::vector<LineSegment>& lines, int lower, int upper,
 std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& lines,
                                                double floor_z, double min_first_height,
                                                const DetectorParams& p, std::vector<int>* refused,
-                                               std::vector<char>* used_out) {
+                                               std::vector<char>* used_out, bool continue_down) {
     std::vector<std::vector<int>> found;
     std::vector<char> used(lines.size(), 0);
     while (static_cast<int>(found.size()) < p.max_staircases_per_direction) {
-        const Candidate c = bestFromInit(lines, used, floor_z, min_first_height, p);
+        Candidate c = bestFromInit(lines, used, floor_z, min_first_height, p);
+        if (continue_down && c.steps.size() >= 2) extendDown(lines, used, p, c);
         if (static_cast<int>(c.steps.size()) < p.min_steps) {
             if (refused != nullptr && c.steps.size() >= 2) *refused = c.steps;
             break;

@@ -38,10 +38,13 @@ bool hasLineBetween(const std::vector<LineSegment>& sorted_lines, int lower, int
 /// `min_first_height` is the lowest allowed height of the first edge above the floor [m].
 /// `refused` (debug only, may be null): receives the best chain that ended the search for being
 /// shorter than min_steps (when it had two edges or more), and `used` the lines taken by results.
+/// `continue_down`: each chain is also continued below its first edge, down to the flight's foot
+/// (ascending flights rising from a pit or a landing below the robot's floor).
 std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& sorted_lines,
                                                double floor_z, double min_first_height,
                                                const DetectorParams& params,
                                                std::vector<int>* refused = nullptr,
-                                               std::vector<char>* used = nullptr);
+                                               std::vector<char>* used = nullptr,
+                                               bool continue_down = false);
 
 }  // namespace stairmap

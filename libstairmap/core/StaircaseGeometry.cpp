@@ -153,4 +153,9 @@ Eigen::Vector2d outwardNormal(const Staircase& s, std::size_t k) {
     return n.dot(lo == hi ? heading : flow) >= 0 ? n : Eigen::Vector2d(-n);
 }
 
+double flightStartZ(const Staircase& s) {
+    const double first = s.steps.front().centre().z();
+    return s.direction == StairDirection::Ascending ? first - s.step_height : first;
+}
+
 }  // namespace stairmap

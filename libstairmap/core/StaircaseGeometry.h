@@ -30,6 +30,13 @@ double edgeSpacingXY(const StairEdge& a, const StairEdge& b);
 /// Extent [lo, hi] of an edge's XY end points projected on the unit direction `lateral` [m].
 std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral);
 
+/// Height [m] (frame of the staircase) of the surface the flight starts from, as the robot meets
+/// it: ascending, the surface one rise under the first nosing (the floor, or a landing or platform
+/// the flight rises from); descending, the first edge's own surface (the floor's or a landing's
+/// edge). Minus the robot's floor height it is the `start_z` of the detect output: 0 for a flight
+/// off the robot's floor. Precondition: !steps.empty(), geometry estimated.
+double flightStartZ(const Staircase& s);
+
 /// Unit XY normal of steps[k] pointing outward along the flight (towards the next step; for a
 /// turning flight, the step's own normal). Precondition: k < steps.size().
 Eigen::Vector2d outwardNormal(const Staircase& s, std::size_t k);

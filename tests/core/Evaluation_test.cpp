@@ -216,5 +216,30 @@ TEST(Evaluation, WidthOfFlightsWithBothSidesBoundedIsReportedSeparately) {
     EXPECT_FALSE(r.samples[1].errors.at(0).both_sides_bounded);
 }
 
+TEST(Evaluation, StartHeightIsComparedWithTheSurfaceTheFlightStartsFrom) {
+    // Truth: bottom_z -0.4 (the floor under the first nosing at -0.2), top_z 0.4.
+    EvaluationSample up;
+    up.name = "up";
+    up.kind = "ascending";
+    up.truth = robotTruth({flight(StairDirection::Ascending)});
+    Staircase a = detectionOn(up.truth.staircases[0], StairDirection::Ascending, 0.45);
+    a.step_height = 0.17;  // first edge at -0.2: the start is read at -0.37, 3 cm above the floor
+    up.detections = {a};
+    EvaluationSample down;
+    down.name = "down";
+    down.kind = "descending";
+    down.truth = robotTruth({flight(StairDirection::Descending)});
+    Staircase d = detectionOn(down.truth.staircases[0], StairDirection::Descending, 0.45,
+                              Eigen::Vector3d(0, 0, -0.02));  // edges 2 cm low: top read at 0.38
+    d.step_height = 0.2;
+    down.detections = {d};
+    const auto report = evaluate({up, down});
+    ASSERT_EQ(report.samples[0].errors.size(), 1u);
+    ASSERT_EQ(report.samples[1].errors.size(), 1u);
+    EXPECT_NEAR(report.samples[0].errors[0].start_cm, 3.0, 1e-9);
+    EXPECT_NEAR(report.samples[1].errors[0].start_cm, 2.0, 1e-9);
+    EXPECT_NEAR(report.total.mae_start_cm, 2.5, 1e-9);
+}
+
 }  // namespace
 }  // namespace stairmap

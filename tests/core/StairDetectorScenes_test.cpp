@@ -8,6 +8,7 @@
 #include "support/DetectionMatching.h"
 #include "support/SyntheticScenes.h"
 #include "core/StairDetector.h"
+#include "core/StaircaseGeometry.h"
 
 namespace stairmap::test {
 namespace {
@@ -203,6 +204,30 @@ TEST(StairDetectorScenes, PartialViewOfADepthCamera) {
     ASSERT_NE(s, nullptr) << describe(r);
     EXPECT_NEAR(s->step_height, t.rise_m, 0.01);
     EXPECT_NEAR(s->step_depth, t.run_m, 0.015);
+}
+
+TEST(StairDetectorScenes, AFlightRisingFromAPitIsFoundWholeWithItsStart) {
+    // The robot stands on a platform (its floor, z = -0.5) ending 1 m before a flight that rises
+    // from a pit two rises deeper: two nosings lie below the robot's floor, one at its level
+    // (a ground line, never searched), four above. The whole flight is reported, starting on the
+    // pit's floor: flightStartZ - floor = -2 rises (the detect output's start_z).
+    SceneOptions opt;
+    opt.floor_z = -0.84;  // the builder's floor: the pit, where the flight starts
+    SceneBuilder scene(opt);
+    StairSpec spec;
+    spec.num_risers = 7;
+    spec.rise_m = 0.17;
+    spec.distance_m = 2.2;
+    const StairTruth t = scene.addStairs(spec);
+    scene.addFloor();
+    scene.addBox({-1.25, 0.0}, 0.0, 4.5, 7.0, -0.84, 0.34);  // the robot's floor: x < 1 m
+    const auto r = StairDetector().detect(scene.cloud(), -0.5);
+    const Staircase* s = matchTruth(r, t);
+    ASSERT_NE(s, nullptr) << describe(r);
+    EXPECT_EQ(s->steps.size(), t.nosings.size()) << describe(r);
+    EXPECT_NEAR(s->steps.front().centre().z(), t.nosings.front().first.z(), 0.02);
+    EXPECT_NEAR(flightStartZ(*s) - (-0.5), -2 * spec.rise_m, 0.02);
+    EXPECT_NEAR(s->step_height, spec.rise_m, 0.01);
 }
 
 TEST(StairDetectorInput, EmptyCloudGivesEmptyResult) {

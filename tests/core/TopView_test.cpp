@@ -68,6 +68,28 @@ TEST(TopView, BackDropsMarkTheFarEndsAndTheFloorIsNoAscendingNosing) {
     EXPECT_GE(far_end, 30);  // nothing beyond the tread's end: a drop away from the robot
 }
 
+TEST(TopView, ACoarseGridIsOneSurfaceNotADropAtEveryHole) {
+    // An elevation map (legged robots' terrain mapping): one point per 4 cm cell, coarser than the
+    // 2.5 cm columns, so up to three columns in a row along a ray can be empty. A platform 20 cm up
+    // over x in [2, 4], |y| < 1, seen from the origin: only its near edge (front drop) and its far
+    // edge and sides (back drop: nothing beyond) are candidates, never a column inside it.
+    PointCloud cloud;
+    for (float x = 1.02f; x < 4.0f; x += 0.04f)
+        for (float y = -0.98f; y < 1.0f; y += 0.04f)
+            cloud.emplace_back(x, y, x < 2.0f ? kFloorZ : kFloorZ + 0.20f);
+    std::vector<TopViewCell> cells;
+    buildTopView(cloud, stepParams(), cells);
+    int inside = 0, near_edge = 0;
+    for (const auto& c : cells) {
+        if (c.z < kFloorZ + 0.1f) continue;  // the floor's own back drops (its far end) aside
+        const bool interior = c.x > 2.3f && c.x < 3.7f && std::abs(c.y) < 0.7f;
+        if (interior) ++inside;
+        if ((c.flags & kFrontDrop) && c.x < 2.05f) ++near_edge;
+    }
+    EXPECT_EQ(inside, 0);
+    EXPECT_GE(near_edge, 40);  // the 2 m near edge: about 50 cells of 4 cm
+}
+
 TEST(TopView, EachCandidateIsTheHighestPointOfItsColumn) {
     const PointCloud cloud = stepCloud();
     const TopViewParams p = stepParams();

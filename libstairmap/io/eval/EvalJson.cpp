@@ -18,6 +18,7 @@ json rowJson(const KindSummary& r) {
             {"mae_depth_cm", r.mae_depth_cm},
             {"mae_width_cm", r.mae_width_cm},
             {"mae_location_cm", r.mae_location_cm},
+            {"mae_start_cm", r.mae_start_cm},
             {"bounded", r.bounded},
             {"mae_width_bounded_cm", r.mae_width_bounded_cm},
             {"mean_time_ms", r.mean_time_ms ? json(*r.mean_time_ms) : json(nullptr)}};
@@ -30,6 +31,7 @@ json sampleJson(const SampleOutcome& s) {
                           {"depth_cm", e.depth_cm},
                           {"width_cm", e.width_cm},
                           {"location_cm", e.location_cm},
+                          {"start_cm", e.start_cm},
                           {"both_sides_bounded", e.both_sides_bounded}});
     }
     return {{"name", s.name},       {"kind", s.kind},
@@ -41,10 +43,10 @@ json sampleJson(const SampleOutcome& s) {
 std::string rowText(const KindSummary& r) {
     char mae[128];
     if (r.detections > 0) {
-        std::snprintf(mae, sizeof(mae), "%8.2f %8.2f %8.2f %10.2f", r.mae_height_cm, r.mae_depth_cm,
-                      r.mae_width_cm, r.mae_location_cm);
+        std::snprintf(mae, sizeof(mae), "%8.2f %8.2f %8.2f %10.2f %7.2f", r.mae_height_cm,
+                      r.mae_depth_cm, r.mae_width_cm, r.mae_location_cm, r.mae_start_cm);
     } else {
-        std::snprintf(mae, sizeof(mae), "%8s %8s %8s %10s", "-", "-", "-", "-");
+        std::snprintf(mae, sizeof(mae), "%8s %8s %8s %10s %7s", "-", "-", "-", "-", "-");
     }
     char time[32];
     if (r.mean_time_ms) std::snprintf(time, sizeof(time), "%9.1f", *r.mean_time_ms);
@@ -72,10 +74,11 @@ json evaluationToJson(const EvaluationReport& report, const EvaluationParams& pa
 
 std::string formatEvaluationTable(const EvaluationReport& report) {
     std::ostringstream out;
-    // The last two columns: matched flights with both sides bounded (wall or open edge seen) and
-    // their width MAE: the width of a flight with an unseen side may be short by what was not seen.
-    out << "kind         clouds samples detected FP     height    depth    width   location  time/det  bounded   width\n"
-        << "                                            MAE cm   MAE cm   MAE cm     MAE cm        ms   sides   MAE cm\n";
+    // "start": height of the surface the flight starts from (flightStartZ). The last two columns:
+    // matched flights with both sides bounded (wall or open edge seen) and their width MAE: the
+    // width of a flight with an unseen side may be short by what was not seen.
+    out << "kind         clouds samples detected FP     height    depth    width   location   start  time/det  bounded   width\n"
+        << "                                            MAE cm   MAE cm   MAE cm     MAE cm  MAE cm        ms   sides   MAE cm\n";
     for (const auto& k : report.kinds) out << rowText(k);
     out << rowText(report.total);
     return out.str();

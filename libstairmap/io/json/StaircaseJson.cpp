@@ -3,6 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "core/StaircaseGeometry.h"
 
 namespace stairmap::io {
 
@@ -133,7 +136,13 @@ Staircase staircaseFromJson(const nlohmann::json& j) {
 
 nlohmann::json detectionToJson(const DetectionResult& result, double time_ms) {
     json staircases = json::array();
-    for (const Staircase& s : result.staircases) staircases.push_back(toJson(s));
+    for (const Staircase& s : result.staircases) {
+        json one = toJson(s);
+        // Relative to the robot's floor: 0 for a flight off it, else the landing or platform
+        // height the flight starts from (a detection property: maps keep absolute heights).
+        if (!s.steps.empty()) one["start_z"] = flightStartZ(s) - result.floor_z;
+        staircases.push_back(std::move(one));
+    }
     return {{"staircases", staircases},
             {"time_ms", time_ms},
             {"floor_z", result.floor_z},

@@ -125,6 +125,10 @@ TEST(StaircaseJson, DetectionToJsonIsTheCliContract) {
     EXPECT_DOUBLE_EQ(j.at("time_ms").get<double>(), 1.25);
     EXPECT_DOUBLE_EQ(j.at("floor_z").get<double>(), -0.55);
     EXPECT_EQ(j.at("floor_estimated"), true);
+    // start_z: above the floor (-0.55), descending: the first edge's own surface (-0.17);
+    // ascending: one rise (0.17) under its first edge.
+    EXPECT_NEAR(j.at("staircases")[0].at("start_z").get<double>(), 0.38, 1e-12);
+    EXPECT_NEAR(j.at("staircases")[1].at("start_z").get<double>(), 0.21, 1e-12);
     EXPECT_EQ(detectionToJson(DetectionResult{}, 0.0).at("staircases"), json::array());
 }
 
