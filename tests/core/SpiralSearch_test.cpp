@@ -1,15 +1,11 @@
 // core/SpiralSearch: spirals found by their axis, on wedge nosings built from a known helix
-// (axis, radii, rise, step angle), and on a ray-cast spiral whose steps turn more than Algorithm 1's
-// parallel limit. Truth comes from the construction, never from the detector.
+// (axis, radii, rise, step angle). Truth comes from the construction, never from the detector.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/SpiralSearch.h"
-#include "core/StairDetector.h"
-#include "support/DetectionMatching.h"
-#include "support/SyntheticScenes.h"
 
 namespace stairmap {
 namespace {
@@ -128,32 +124,6 @@ TEST(SpiralSearch, NoSpiralInStraightFlightsOrUnorderedRadialLines) {
     std::vector<LineSegment> three;
     for (int k = 1; k <= 3; ++k) three.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
     EXPECT_TRUE(findSpirals(three, {}, p).empty());
-}
-
-TEST(SpiralSearch, DetectorReportsAStronglyTurningSpiralOnce) {
-    // 48.7 deg per step, seen from above: Algorithm 1 chains the nosings' visible pieces and the
-    // spiral search finds the same flight by its axis; it is reported once, on the true nosings.
-    test::SceneOptions o;
-    test::SceneBuilder scene(o);
-    test::StairSpec s;
-    s.kind = StairKind::Spiral;
-    s.num_risers = 7;
-    s.rise_m = 0.17;
-    s.run_m = 0.40;
-    s.width_m = 0.8;
-    s.distance_m = 2.5;
-    s.turn_per_step_rad = 0.85;
-    const test::StairTruth truth = scene.addStairs(s);
-    scene.addFloor();
-    const DetectionResult r = StairDetector().detect(scene.cloud(), o.floor_z);
-    ASSERT_EQ(r.staircases.size(), 1u) << test::describe(r);
-    const Staircase& found = r.staircases[0];
-    EXPECT_EQ(found.direction, StairDirection::Ascending);
-    // Most of the flight (the lowest wedges' nosings are short: see docs/detector.md), every edge
-    // on a true nosing.
-    EXPECT_GE(found.steps.size(), truth.nosings.size() - 3) << test::describe(r);
-    EXPECT_LT(test::nosingError(found, truth), 0.05) << test::describe(r);
-    EXPECT_NEAR(found.step_height, s.rise_m, 0.01);
 }
 
 }  // namespace
