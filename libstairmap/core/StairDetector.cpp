@@ -13,6 +13,7 @@
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
 #include "core/StairPairExplain.h"
+#include "core/SpiralSearch.h"
 #include "core/StairSearch.h"
 #include "core/StepExtent.h"
 #include "core/StaircaseGeometry.h"
@@ -153,9 +154,11 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
 
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
                      StairDirection dir, double floor_z, const DetectorParams& p,
-                     std::vector<Staircase>& out, DetectorDebug* debug) {
+                     std::vector<Staircase>& out, DetectorDebug* debug,
+                     std::vector<LineSegment>& raw_lines) {
     const bool up = dir == StairDirection::Ascending;
     std::vector<LineSegment> lines = extractLines(cells, up ? kFrontDrop : kBackDrop, floor_z, p);
+    raw_lines = lines;  // real z, for the spiral search
     if (!up) {
         // Descending = ascending in mirrored z.
         for (auto& l : lines) l.z = 2 * floor_z - l.z;
@@ -191,6 +194,42 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     }
 }
 
+/// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
+/// steps (in its column's radius and height range) unless one of them has more steps.
+void addSpiralFlights(const std::vector<LineSegment>& front_drops,
+                      const std::vector<LineSegment>& back_drops, double floor_z,
+                      const DetectorParams& p, std::vector<Staircase>& out) {
+    SpiralSearchParams sp;
+    sp.floor_z = floor_z;
+    sp.min_first_height_m = p.floor_tolerance_m;
+    sp.max_first_height_m = p.init_height_factor * p.max_step_height_m;
+    sp.min_rise_m = p.min_step_height_m;
+    sp.max_rise_m = p.max_step_height_m;
+    sp.min_run_m = p.min_step_depth_m;
+    sp.max_run_m = p.max_step_depth_m;
+    sp.min_steps = p.min_steps;
+    for (const SpiralFlight& f : findSpirals(front_drops, back_drops, sp)) {
+        const double z_lo = f.edges.front().z - p.max_step_height_m;
+        const double z_hi = f.edges.back().z + p.max_step_height_m;
+        auto onSpiral = [&](const Staircase& s) {
+            int inside = 0;
+            for (const StairEdge& e : s.steps) {
+                const Eigen::Vector3d c = e.centre();
+                inside += (c.head<2>() - f.axis).norm() < f.outer_radius_m + 0.15 && c.z() > z_lo &&
+                          c.z() < z_hi;
+            }
+            return 2 * inside > static_cast<int>(s.steps.size());
+        };
+        bool longer_chain = false;
+        for (const Staircase& s : out) longer_chain |= onSpiral(s) && s.steps.size() > f.edges.size();
+        if (longer_chain) continue;
+        out.erase(std::remove_if(out.begin(), out.end(), onSpiral), out.end());
+        out.push_back(makeStaircase(f.edges, StairDirection::Ascending, 0.5 * p.leaf_size_m));
+        out.back().step_depth = f.run_m;  // at mid radius, not where the edges were seen
+        out.back().slope_rad = std::atan2(out.back().step_height, f.run_m);
+    }
+}
+
 }  // namespace
 
 StairDetector::StairDetector(const DetectorParams& params) : params_(params) { params_.validate(); }
@@ -221,17 +260,21 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     buildTopView(cloud_robot, tp, cells);
     if (debug) debug->candidates = cells;
 
+    std::vector<LineSegment> front_drops, back_drops;  // real z, for the spiral search
     if (params_.detect_ascending)
         detectDirection(cloud_robot, cells, StairDirection::Ascending, floor, params_, result.staircases,
-                        debug);
+                        debug, front_drops);
     if (params_.detect_descending)
         detectDirection(cloud_robot, cells, StairDirection::Descending, floor, params_, result.staircases,
-                        debug);
+                        debug, back_drops);
     mergeOverlappingFlights(result.staircases);  // Algorithm 2 on the detector's own chains
     FlightJoinParams jp;
     jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
     jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);
     joinContinuedFlights(result.staircases, jp);
+    // After the merges: a spiral's run is its chord at mid radius, which they would re-estimate.
+    if (params_.detect_ascending)
+        addSpiralFlights(front_drops, back_drops, floor, params_, result.staircases);
     for (Staircase& s : result.staircases) measureStepExtents(cloud_robot, s);  // widths, sides
     if (debug) debug->accepted = result.staircases;
     return result;

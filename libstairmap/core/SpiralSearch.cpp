@@ -1,0 +1,348 @@
+#include "core/SpiralSearch.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace stairmap {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+/// [m^2, rad^2] variances of a put-back edge's (rho, theta), as in MissingNosings: a guess
+constexpr double kUnseenRhoVar = 0.05 * 0.05;
+constexpr double kUnseenThetaVar = 0.1 * 0.1;
+/// [m] a nosing's near end may lie this far past the axis (noise at the column)
+constexpr double kStraddleTolerance = 0.05;
+
+double wrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
+
+/// A line seen from an axis candidate: radii of its ends and its angle around the axis.
+struct Radial {
+    int index = -1;
+    double near = 0.0, far = 0.0;  ///< [m] end distances to the axis
+    double phi = 0.0;              ///< [rad] direction from the axis to the far end
+    double z = 0.0;
+    double rot = 0.0;              ///< [rad] turn about the axis onto the level's nosing (back edges)
+};
+
+using SpiralLines = std::vector<LineSegment>;
+
+/// The line as a wedge nosing of a spiral around `axis`, if it is one (radial, inner end near it).
+bool asRadial(const SpiralLines& sl, int index, const Eigen::Vector2d& axis,
+              const SpiralSearchParams& p, Radial& out) {
+    const LineSegment& l = sl[index];
+    if (std::abs(l.distanceTo(axis)) > p.max_axis_offset_m) return false;
+    const double ds = (l.start - axis).norm(), de = (l.end - axis).norm();
+    const Eigen::Vector2d far_pt = ds > de ? l.start : l.end;
+    const Eigen::Vector2d near_pt = ds > de ? l.end : l.start;
+    out.far = std::max(ds, de);
+    out.near = std::min(ds, de);
+    if (out.near > p.max_column_radius_m || out.far < p.min_outer_radius_m) return false;
+    const Eigen::Vector2d u = (far_pt - axis) / out.far;
+    if ((near_pt - axis).dot(u) < -kStraddleTolerance) return false;  // crosses the axis
+    out.phi = std::atan2(u.y(), u.x());
+    out.index = index;
+    out.z = l.z;
+    out.rot = 0.0;
+    return true;
+}
+
+/// Helix model: angle around the axis = phi0 + omega * (z - z0).
+struct Helix {
+    Eigen::Vector2d axis = Eigen::Vector2d::Zero();
+    double z0 = 0.0, phi0 = 0.0;
+    double omega = 0.0;  ///< [rad/m], its sign is the sense of ascent
+};
+
+/// Lines on the helix turned by `shift` [rad].
+std::vector<Radial> collectInliers(const SpiralLines& sl, const Helix& h, double shift,
+                                   const SpiralSearchParams& p) {
+    std::vector<Radial> in;
+    Radial r;
+    for (int k = 0; k < static_cast<int>(sl.size()); ++k) {
+        if (!asRadial(sl, k, h.axis, p, r)) continue;
+        const double predicted = h.phi0 + h.omega * (r.z - h.z0) + shift;
+        if (std::abs(wrapAngle(r.phi - predicted)) <= p.angle_tolerance_deg * kDeg) in.push_back(r);
+    }
+    return in;
+}
+
+/// Least-squares axis (the point nearest to all inlier lines) and helix rate through it.
+bool refitHelix(const SpiralLines& sl, const std::vector<Radial>& in, Helix& h) {
+    Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d b = Eigen::Vector2d::Zero();
+    for (const Radial& r : in) {
+        const LineSegment& l = sl[r.index];
+        const Eigen::Vector2d n(std::cos(l.theta), std::sin(l.theta));
+        a += n * n.transpose();
+        b += n * l.rho;
+    }
+    if (std::abs(a.determinant()) < 1e-6) return false;
+    h.axis = a.ldlt().solve(b);
+    // Unwrap each angle against the old helix, then fit phi = phi0 + omega (z - z0).
+    double sz = 0, sp = 0, szz = 0, szp = 0;
+    const double n = static_cast<double>(in.size());
+    for (const Radial& r : in) {
+        const double dz = r.z - h.z0;
+        const double pred = h.phi0 + h.omega * dz;
+        const double phi = pred + wrapAngle(r.phi - pred);
+        sz += dz, sp += phi, szz += dz * dz, szp += dz * phi;
+    }
+    const double den = n * szz - sz * sz;
+    if (den < 1e-9) return false;
+    h.omega = (n * szp - sz * sp) / den;
+    h.phi0 = (sp - h.omega * sz) / n;
+    return true;
+}
+
+/// One seen level: the highest inlier line at that height (a riser hit reads low).
+std::vector<Radial> levelsOf(std::vector<Radial> in, double tolerance) {
+    std::sort(in.begin(), in.end(), [](const Radial& a, const Radial& b) { return a.z < b.z; });
+    std::vector<Radial> levels;
+    for (const Radial& r : in) {
+        if (!levels.empty() && r.z - levels.back().z < tolerance) {
+            if (r.z > levels.back().z) levels.back() = r;  // a riser hit reads low
+            continue;
+        }
+        levels.push_back(r);
+    }
+    return levels;
+}
+
+/// Levels indexed on the rise r0 from level `ref`: the longest run with at most
+/// max_missing_levels unseen between neighbours (levels off the rise by more than the tolerance
+/// are left out).
+std::vector<std::pair<int, Radial>> indexOnRise(const std::vector<Radial>& levels, double r0,
+                                                double ref_z, const SpiralSearchParams& p,
+                                                double& misfit) {
+    std::vector<std::pair<int, Radial>> best, run;
+    double best_misfit = 0.0, run_misfit = 0.0;
+    for (const Radial& l : levels) {
+        const double idx = (l.z - ref_z) / r0;
+        const int k = static_cast<int>(std::lround(idx));
+        if (std::abs(idx - k) * r0 > p.height_tolerance_m || (!run.empty() && k == run.back().first))
+            continue;
+        if (!run.empty() && k - run.back().first > p.max_missing_levels + 1) {
+            if (run.size() > best.size()) best = run, best_misfit = run_misfit;
+            run.clear(), run_misfit = 0.0;
+        }
+        run.emplace_back(k, l);
+        run_misfit += std::abs(idx - k) * r0;
+    }
+    if (run.size() > best.size()) best = run, best_misfit = run_misfit;
+    misfit = best_misfit;
+    return best;
+}
+
+/// Step index of every level: on the rise (a gap between two levels, or half of it: every other
+/// nosing seen) and from the reference level that index the most levels, each unseen level in
+/// between counting against (a small rise fits stray levels), then the least misfit. Empty when
+/// none fits.
+std::vector<std::pair<int, Radial>> indexLevels(const std::vector<Radial>& levels,
+                                                const SpiralSearchParams& p, double& rise) {
+    constexpr double kMissingWeight = 0.75;  ///< [-] an unseen level costs this much of a seen one
+    std::vector<std::pair<int, Radial>> best;
+    double best_score = 0.0, best_misfit = 0.0;
+    for (std::size_t i = 1; i < levels.size(); ++i) {
+        const double g = levels[i].z - levels[i - 1].z;
+        for (double r0 : {g, 0.5 * g}) {
+            if (r0 < p.min_rise_m - p.height_tolerance_m || r0 > p.max_rise_m + p.height_tolerance_m)
+                continue;
+            for (const Radial& ref : levels) {
+                double misfit = 0.0;
+                auto idx = indexOnRise(levels, r0, ref.z, p, misfit);
+                if (idx.empty()) continue;
+                const int missing = idx.back().first - idx.front().first + 1 - static_cast<int>(idx.size());
+                const double score = static_cast<double>(idx.size()) - kMissingWeight * missing;
+                if (score > best_score || (score == best_score && misfit < best_misfit))
+                    best = std::move(idx), best_score = score, best_misfit = misfit;
+            }
+        }
+    }
+    if (best.size() < 2) return {};
+    rise = (best.back().second.z - best.front().second.z) / (best.back().first - best.front().first);
+    return best;
+}
+
+/// The nosing at angle phi around the axis, from radius near to far, at height z (put back).
+LineSegment unseenNosing(const Eigen::Vector2d& axis, double phi, double near, double far, double z) {
+    const Eigen::Vector2d u(std::cos(phi), std::sin(phi));
+    LineSegment m;
+    m.start = axis + near * u;
+    m.end = axis + far * u;
+    m.z = z;
+    Eigen::Vector2d n(u.y(), -u.x());
+    if (n.dot(m.start) < 0) n = -n;  // Hessian form: rho >= 0
+    m.rho = n.dot(m.start);
+    m.theta = std::atan2(n.y(), n.x());
+    m.cov << kUnseenRhoVar, 0.0, 0.0, kUnseenThetaVar;
+    m.num_points = 0;
+    return m;
+}
+
+/// The line turned by `rot` about the axis (a back edge moved onto its tread's nosing).
+LineSegment turned(const LineSegment& l, const Eigen::Vector2d& axis, double rot) {
+    if (rot == 0.0) return l;
+    const Eigen::Rotation2Dd r(rot);
+    LineSegment m = l;
+    m.start = axis + r * (l.start - axis);
+    m.end = axis + r * (l.end - axis);
+    Eigen::Vector2d n = r * Eigen::Vector2d(std::cos(l.theta), std::sin(l.theta));
+    if (n.dot(m.start) < 0) n = -n;  // Hessian form: rho >= 0
+    m.rho = n.dot(m.start);
+    m.theta = std::atan2(n.y(), n.x());
+    return m;
+}
+
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+
+/// Nosings and back edges. Where the next wedge's top is unseen (above a level LiDAR), a tread's
+/// back edge reads as a drop too: a second helix one step angle ahead of the nosings' in the
+/// ascent's sense (at height z, the angle of the nosing one rise higher). Of the lines one step
+/// ahead of and behind `in`'s helix, the larger group tells which helix `in` is on; back edges are
+/// turned back onto their tread's nosing. Empty when `in` gives no rise.
+std::vector<Radial> withBackEdges(const SpiralLines& sl, const Helix& h, std::vector<Radial> in,
+                                  const SpiralSearchParams& p) {
+    double rise = 0.0;
+    if (indexLevels(levelsOf(in, p.height_tolerance_m), p, rise).empty()) return {};
+    const double step = h.omega * rise;  // nosing k+1's angle - nosing k's
+    std::vector<Radial> ahead = collectInliers(sl, h, step, p);
+    std::vector<Radial> behind = collectInliers(sl, h, -step, p);
+    const bool in_are_back = behind.size() > ahead.size();
+    for (Radial& r : in) r.rot = in_are_back ? -step : 0.0;
+    for (Radial& r : in_are_back ? behind : ahead) {
+        r.rot = in_are_back ? 0.0 : -step;
+        in.push_back(r);
+    }
+    for (Radial& r : in) r.phi += r.rot;
+    return in;
+}
+
+/// The spiral of one axis candidate, if its levels make a stair (empty edges otherwise).
+SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vector<Radial>& in,
+                         const SpiralSearchParams& p) {
+    SpiralFlight f;
+    double rise = 0.0;
+    const auto idx = indexLevels(levelsOf(in, p.height_tolerance_m), p, rise);
+    if (static_cast<int>(idx.size()) < p.min_seen_levels) return f;
+    const int levels = idx.back().first - idx.front().first + 1;
+    const double first_z = idx.front().second.z - p.floor_z;
+    if (levels < p.min_steps || rise < p.min_rise_m || rise > p.max_rise_m) return f;
+    if (first_z < p.min_first_height_m || first_z > p.max_first_height_m) return f;
+    const double step_angle = std::abs(h.omega) * rise;
+    if (step_angle < p.min_step_angle_deg * kDeg || step_angle > p.max_step_angle_deg * kDeg) return f;
+    std::vector<double> outers;
+    double inner = 1e9;
+    for (const auto& [k, r] : idx) outers.push_back(r.far), inner = std::min(inner, r.near);
+    const double outer = median(outers);
+    const double run = (inner + outer) * std::sin(0.5 * step_angle);  // chord at mid radius
+    if (run < p.min_run_m || run > p.max_run_m) return f;
+    for (std::size_t i = 0; i < idx.size(); ++i) {
+        if (i > 0) {  // levels between two seen ones: on the helix, radii interpolated
+            const auto& [ka, a] = idx[i - 1];
+            const auto& [kb, b] = idx[i];
+            const double dphi = wrapAngle(b.phi - a.phi);
+            for (int k = ka + 1; k < kb; ++k) {
+                const double t = static_cast<double>(k - ka) / (kb - ka);
+                f.edges.push_back(unseenNosing(h.axis, a.phi + t * dphi, a.near + t * (b.near - a.near),
+                                               a.far + t * (b.far - a.far), a.z + t * (b.z - a.z)));
+            }
+        }
+        const Radial& r = idx[i].second;
+        f.edges.push_back(turned(sl[r.index], h.axis, r.rot));
+    }
+    f.axis = h.axis;
+    f.outer_radius_m = outer;
+    f.inner_radius_m = inner;
+    f.step_angle_rad = step_angle;
+    f.run_m = run;
+    f.seen_levels = static_cast<int>(idx.size());
+    return f;
+}
+
+/// Axis candidate of a pair of lines: their intersection, when both are radial about it.
+bool pairHelix(const SpiralLines& sl, int i, int j, const SpiralSearchParams& p, Helix& h) {
+    const LineSegment& a = sl[i];
+    const LineSegment& b = sl[j];
+    const Eigen::Vector2d da = a.direction(), db = b.direction();
+    const double cross = da.x() * db.y() - da.y() * db.x();
+    if (std::abs(cross) < std::sin(p.min_step_angle_deg * kDeg)) return false;  // parallel
+    const Eigen::Vector2d w = b.start - a.start;
+    const double t = (w.x() * db.y() - w.y() * db.x()) / cross;
+    h.axis = a.start + t * da;
+    Radial ra, rb;
+    if (!asRadial(sl, i, h.axis, p, ra) || !asRadial(sl, j, h.axis, p, rb)) return false;
+    h.z0 = ra.z;
+    h.phi0 = ra.phi;
+    h.omega = wrapAngle(rb.phi - ra.phi) / (rb.z - ra.z);
+    return std::abs(h.omega) * p.min_rise_m >= p.min_step_angle_deg * kDeg * 0.5;
+}
+
+/// The spiral through the pair (i, j), with the lines it uses (empty edges when none).
+SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector<char>& used,
+                          const SpiralSearchParams& p, std::vector<Radial>& in) {
+    Helix h;
+    if (!pairHelix(sl, i, j, p, h)) return {};
+    in = collectInliers(sl, h, 0.0, p);
+    if (in.size() < 3 || !refitHelix(sl, in, h)) return {};
+    in = withBackEdges(sl, h, collectInliers(sl, h, 0.0, p), p);
+    in.erase(std::remove_if(in.begin(), in.end(), [&](const Radial& r) { return used[r.index]; }),
+             in.end());
+    return buildFlight(sl, h, in, p);
+}
+
+/// Best spiral among the lines not yet used (empty edges when none).
+SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
+                        const SpiralSearchParams& p, std::vector<int>& inliers) {
+    SpiralFlight best;
+    const int n = static_cast<int>(sl.size());
+    std::vector<char> explored(n, 0);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double dz = sl[j].z - sl[i].z;
+            if (used[i] || used[j] || (explored[i] && explored[j])) continue;
+            if (dz < p.min_rise_m - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
+            std::vector<Radial> in;
+            SpiralFlight f = spiralOfPair(sl, i, j, used, p, in);
+            if (f.edges.empty()) continue;
+            for (const Radial& r : in) explored[r.index] = 1;  // their other pairs: the same axis
+            if (f.edges.size() > best.edges.size() ||
+                (f.edges.size() == best.edges.size() && f.seen_levels > best.seen_levels)) {
+                best = std::move(f);
+                inliers.clear();
+                for (const Radial& r : in) inliers.push_back(r.index);
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drops,
+                                      const std::vector<LineSegment>& back_drops,
+                                      const SpiralSearchParams& params) {
+    SpiralLines sl = front_drops;  // a wedge's edges read as either drop, depending on the view
+    sl.insert(sl.end(), back_drops.begin(), back_drops.end());
+    std::vector<SpiralFlight> out;
+    std::vector<char> used(sl.size(), 0);
+    for (int n = 0; n < params.max_spirals; ++n) {
+        std::vector<int> inliers;
+        SpiralFlight f = bestSpiral(sl, used, params, inliers);
+        if (f.edges.empty()) break;
+        for (int k : inliers) used[k] = 1;
+        // The remaining lines (the other drop's copies of the nosings, pieces) may give the same
+        // spiral again, better seen: one spiral per footprint, the one with more levels.
+        auto same = std::find_if(out.begin(), out.end(), [&](const SpiralFlight& o) {
+            return (o.axis - f.axis).norm() < std::min(o.outer_radius_m, f.outer_radius_m);
+        });
+        if (same == out.end()) out.push_back(std::move(f));
+        else if (f.edges.size() > same->edges.size()) *same = std::move(f);
+    }
+    return out;
+}
+
+}  // namespace stairmap

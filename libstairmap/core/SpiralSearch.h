@@ -1,0 +1,69 @@
+#pragma once
+// Spiral staircases found by their axis (issue 10). Algorithm 1 (StairSearch) chains a nosing to the
+// next one only when the two are near-parallel and the upper one lies one run further along the
+// lower one's normal. A spiral's wedge nosings are radial lines around the central column, each
+// turned by the step angle (15-65 deg) from the one below, and a sparse or side view often sees
+// only every other one (two steps turn up to 130 deg). Their common property is the axis: every
+// nosing's line passes (within a few cm) through it, its inner end near the column, and its angle
+// around the axis grows linearly with its height (a helix). This search looks for that directly,
+// on the lines of both drop directions (a wedge seen from its side reads as either). A tread's back
+// edge (where the next wedge rises) reads as a drop too when that wedge's top is unseen (above a
+// level LiDAR): those lines lie on a second helix one step angle ahead and are turned back onto
+// their tread's nosing.
+//
+// Per pair of lines one to two rises apart and not parallel: their lines' intersection is an axis
+// candidate when it lies near the inner end of both; the lines through it (radial, not straddling
+// it) whose angle around it matches the pair's helix are its inliers. The axis is refitted to
+// them, their levels must lie on one rise (a missing level or two is put back), the step angle
+// and the run at mid radius must be a stair's. The candidate with the most levels wins; its lines
+// are removed and the search repeats.
+
+#include <vector>
+
+#include "core/LineSegment.h"
+
+namespace stairmap {
+
+struct SpiralSearchParams {
+    double floor_z = 0.0;                  ///< [m] floor the robot stands on
+    double min_first_height_m = 0.05;      ///< [m] lowest allowed nosing above the floor
+    double max_first_height_m = 1.05;      ///< [m] the lowest found nosing must be below this
+    double min_rise_m = 0.11;              ///< [m] rise range (DetectorParams condition 1)
+    double max_rise_m = 0.30;              ///< [m]
+    double min_run_m = 0.15;               ///< [m] run at mid radius (condition 2)
+    double max_run_m = 0.45;               ///< [m]
+    double min_step_angle_deg = 10.0;      ///< [deg] turn per step: below this the flight is straight
+    double max_step_angle_deg = 70.0;      ///< [deg]
+    double max_column_radius_m = 0.45;     ///< [m] inner end of a nosing at most this far from the axis
+    double min_outer_radius_m = 0.40;      ///< [m] outer end at least this far (wedges of a stair)
+    double max_axis_offset_m = 0.08;       ///< [m] a nosing's line passes this close to the axis
+    double angle_tolerance_deg = 9.0;      ///< [deg] angle around the axis off the helix
+    double height_tolerance_m = 0.035;     ///< [m] level off the fitted rise
+    int max_missing_levels = 2;            ///< [-] unseen levels put back between two seen ones
+    int min_steps = 4;                     ///< [-] fewest levels of a spiral (seen + put back)
+    /// [-] fewest seen levels: 4 reported extra flights on the mapping test's accumulated submaps
+    /// (tests/pipeline/TwoFloorDrive); 5 keeps dev recall and lowers spiral rise MAE
+    int min_seen_levels = 5;
+    int max_spirals = 2;                   ///< [-] search repeats on the remaining lines
+};
+
+/// A found spiral: its nosings from the lowest up (z real, put-back levels have num_points 0).
+struct SpiralFlight {
+    std::vector<LineSegment> edges;
+    Eigen::Vector2d axis = Eigen::Vector2d::Zero();  ///< [m] XY of the column's axis
+    double outer_radius_m = 0.0;                     ///< [m] median outer end distance to the axis
+    double inner_radius_m = 0.0;                     ///< [m] nearest inner end to the axis (column)
+    double step_angle_rad = 0.0;                     ///< [rad] turn per step (> 0)
+    /// [m] chord between consecutive nosings' centres (mid radius): the run of a turning flight,
+    /// independent of how much of each nosing was seen
+    double run_m = 0.0;
+    int seen_levels = 0;                             ///< levels with a line of their own
+};
+
+/// Spirals among the lines of both drop directions (real z, any order; `front_drops` lower towards
+/// the robot at the origin, `back_drops` lower away from it). Ascending flights only.
+std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drops,
+                                      const std::vector<LineSegment>& back_drops,
+                                      const SpiralSearchParams& params);
+
+}  // namespace stairmap

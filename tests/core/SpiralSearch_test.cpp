@@ -1,0 +1,130 @@
+// core/SpiralSearch: spirals found by their axis, on wedge nosings built from a known helix
+// (axis, radii, rise, step angle). Truth comes from the construction, never from the detector.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/SpiralSearch.h"
+
+namespace stairmap {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+/// A known spiral: nosing k (k = 1..levels) at height floor + k rise, angle phi0 + (k-1) step.
+struct Helix {
+    Eigen::Vector2d axis{3.0, 1.0};
+    double inner = 0.12, outer = 0.9;  ///< [m] column and outer radius
+    double floor_z = -0.5, rise = 0.18;
+    double phi0 = 200.0 * kDeg, step = 50.0 * kDeg;  ///< > Algorithm 1's 45 deg parallel limit
+    double angleOf(int k) const { return phi0 + (k - 1) * step; }
+    double zOf(int k) const { return floor_z + k * rise; }
+};
+
+LineSegment radialLine(const Helix& h, double phi, double z) {
+    const Eigen::Vector2d u(std::cos(phi), std::sin(phi));
+    LineSegment l;
+    l.start = h.axis + (h.inner + 0.02) * u;  // seen from just off the column
+    l.end = h.axis + (h.outer - 0.02) * u;
+    l.z = z;
+    Eigen::Vector2d n(u.y(), -u.x());
+    if (n.dot(l.start) < 0) n = -n;
+    l.rho = n.dot(l.start);
+    l.theta = std::atan2(n.y(), n.x());
+    l.cov = Eigen::Matrix2d::Identity() * 1e-4;
+    l.num_points = 30;
+    return l;
+}
+
+/// XY distance of the edge's centre from nosing k's centre.
+double centreError(const LineSegment& e, const Helix& h, int k) {
+    const Eigen::Vector2d u(std::cos(h.angleOf(k)), std::sin(h.angleOf(k)));
+    return (e.centre() - (h.axis + 0.5 * (h.inner + h.outer) * u)).norm();
+}
+
+SpiralSearchParams paramsFor(const Helix& h) {
+    SpiralSearchParams p;
+    p.floor_z = h.floor_z;
+    return p;
+}
+
+TEST(SpiralSearch, FindsEveryNosingOfAStronglyTurningSpiral) {
+    const Helix h;
+    std::vector<LineSegment> front, back;
+    for (int k = 1; k <= 7; ++k) (k % 2 ? front : back).push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    front.push_back(radialLine(h, 20.0 * kDeg, h.zOf(2)));  // a stray line at a nosing's height
+    const auto spirals = findSpirals(front, back, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 7u);
+    EXPECT_LT((f.axis - h.axis).norm(), 0.01);
+    EXPECT_NEAR(f.step_angle_rad, h.step, 1.0 * kDeg);
+    // Run at mid radius: the chord between consecutive nosings' centres.
+    EXPECT_NEAR(f.run_m, (h.inner + h.outer) * std::sin(0.5 * h.step), 0.03);
+    for (int k = 1; k <= 7; ++k) {
+        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 1e-9) << k;
+        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
+    }
+}
+
+TEST(SpiralSearch, PutsBackUnseenLevelsOnTheHelix) {
+    Helix h;
+    h.step = 25.0 * kDeg;
+    h.phi0 = -60.0 * kDeg;
+    std::vector<LineSegment> front;
+    for (int k : {1, 3, 5, 7, 8}) front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    const auto spirals = findSpirals(front, {}, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 8u);
+    EXPECT_EQ(f.seen_levels, 5);
+    for (int k = 1; k <= 8; ++k) {
+        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 0.005) << k;
+        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
+        EXPECT_EQ(f.edges[k - 1].num_points == 0, k == 2 || k == 4 || k == 6) << k;
+    }
+}
+
+TEST(SpiralSearch, TurnsBackEdgesOntoTheirNosings) {
+    // Treads above a level LiDAR: some levels are seen only by their back edge, where the next
+    // wedge rises (at height z_k, the angle of nosing k+1).
+    Helix h;
+    h.step = -24.0 * kDeg;  // clockwise ascent
+    std::vector<LineSegment> lines;
+    for (int k : {1, 2, 3}) lines.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    for (int k : {4, 5, 6, 7}) lines.push_back(radialLine(h, h.angleOf(k + 1), h.zOf(k)));
+    const auto spirals = findSpirals({}, lines, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 7u);
+    for (int k = 1; k <= 7; ++k) EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
+}
+
+TEST(SpiralSearch, NoSpiralInStraightFlightsOrUnorderedRadialLines) {
+    const Helix h;
+    const SpiralSearchParams p = paramsFor(h);
+    std::vector<LineSegment> straight;
+    for (int k = 1; k <= 8; ++k) {  // parallel nosings 0.28 m apart: a straight flight
+        LineSegment l;
+        l.start = {2.0 + 0.28 * k, -0.6};
+        l.end = {2.0 + 0.28 * k, 0.6};
+        l.z = h.zOf(k);
+        l.rho = l.start.x();
+        l.theta = 0.0;
+        straight.push_back(l);
+    }
+    EXPECT_TRUE(findSpirals(straight, {}, p).empty());
+    // Radial lines about one point whose angles do not grow with height (a shelf's star, clutter).
+    std::vector<LineSegment> star;
+    const double angles[] = {0, 140, 60, 250, 10, 190, 300, 90};
+    for (int k = 1; k <= 8; ++k) star.push_back(radialLine(h, angles[k - 1] * kDeg, h.zOf(k)));
+    EXPECT_TRUE(findSpirals(star, {}, p).empty());
+    // Three levels only: fewer than min_steps.
+    std::vector<LineSegment> three;
+    for (int k = 1; k <= 3; ++k) three.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    EXPECT_TRUE(findSpirals(three, {}, p).empty());
+}
+
+}  // namespace
+}  // namespace stairmap
