@@ -18,11 +18,17 @@ LineSegment halfway(const LineSegment& a, const LineSegment& b) {
     const bool same_order = u.dot(b.end - b.start) >= 0;
     const Eigen::Vector2d b_start = same_order ? b.start : b.end;
     const Eigen::Vector2d b_end = same_order ? b.end : b.start;
+    return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
+}
+
+}  // namespace
+
+LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double z) {
     LineSegment m;
-    m.start = 0.5 * (a.start + b_start);
-    m.end = 0.5 * (a.end + b_end);
-    m.z = 0.5 * (a.z + b.z);
-    const Eigen::Vector2d d = (m.end - m.start).normalized();
+    m.start = start;
+    m.end = end;
+    m.z = z;
+    const Eigen::Vector2d d = (end - start).normalized();
     Eigen::Vector2d n(d.y(), -d.x());
     if (n.dot(m.start) < 0) n = -n;  // Hessian form: rho >= 0
     m.rho = n.dot(m.start);
@@ -31,8 +37,6 @@ LineSegment halfway(const LineSegment& a, const LineSegment& b) {
     m.num_points = 0;
     return m;
 }
-
-}  // namespace
 
 int fillMissingNosings(std::vector<LineSegment>& edges) {
     if (edges.size() < 3) return 0;

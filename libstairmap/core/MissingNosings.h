@@ -10,6 +10,10 @@
 
 namespace stairmap {
 
+/// A nosing that was not seen, put back from its end points and height: Hessian form (rho >= 0),
+/// num_points = 0 and a wide (rho, theta) covariance (5 cm, 0.1 rad), so fusion weighs it little.
+LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double z);
+
 /// Inserts an edge halfway (XY and z) between consecutive edges of a flight that are about two
 /// rises apart (1.6-2.4x the median rise of the flight). Inserted edges have num_points = 0 (not
 /// seen) and a wide (rho, theta) covariance. `edges` are ordered from the floor outward, z real

@@ -4,13 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/MissingNosings.h"
+
 namespace stairmap {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-/// [m^2, rad^2] variances of a put-back edge's (rho, theta), as in MissingNosings: a guess
-constexpr double kUnseenRhoVar = 0.05 * 0.05;
-constexpr double kUnseenThetaVar = 0.1 * 0.1;
 /// [m] a nosing's near end may lie this far past the axis (noise at the column)
 constexpr double kStraddleTolerance = 0.05;
 
@@ -165,19 +164,10 @@ std::vector<std::pair<int, Radial>> indexLevels(const std::vector<Radial>& level
 }
 
 /// The nosing at angle phi around the axis, from radius near to far, at height z (put back).
-LineSegment unseenNosing(const Eigen::Vector2d& axis, double phi, double near, double far, double z) {
+LineSegment unseenRadialNosing(const Eigen::Vector2d& axis, double phi, double near, double far,
+                               double z) {
     const Eigen::Vector2d u(std::cos(phi), std::sin(phi));
-    LineSegment m;
-    m.start = axis + near * u;
-    m.end = axis + far * u;
-    m.z = z;
-    Eigen::Vector2d n(u.y(), -u.x());
-    if (n.dot(m.start) < 0) n = -n;  // Hessian form: rho >= 0
-    m.rho = n.dot(m.start);
-    m.theta = std::atan2(n.y(), n.x());
-    m.cov << kUnseenRhoVar, 0.0, 0.0, kUnseenThetaVar;
-    m.num_points = 0;
-    return m;
+    return unseenNosing(axis + near * u, axis + far * u, z);
 }
 
 /// The line turned by `rot` about the axis (a back edge moved onto its tread's nosing).
@@ -247,7 +237,7 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
             const double dphi = wrapAngle(b.phi - a.phi);
             for (int k = ka + 1; k < kb; ++k) {
                 const double t = static_cast<double>(k - ka) / (kb - ka);
-                f.edges.push_back(unseenNosing(h.axis, a.phi + t * dphi, a.near + t * (b.near - a.near),
+                f.edges.push_back(unseenRadialNosing(h.axis, a.phi + t * dphi, a.near + t * (b.near - a.near),
                                                a.far + t * (b.far - a.far), a.z + t * (b.z - a.z)));
             }
         }
