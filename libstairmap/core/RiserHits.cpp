@@ -28,17 +28,25 @@ bool isUnder(const LineSegment& low, const LineSegment& high, const Frame& h,
     return cover >= p.min_cover * low.length();
 }
 
-/// Least-squares z = a + b * i over the edges with keep[i]; false with fewer than 2.
+/// fitHeightLine over the edges with keep[i].
 bool fitHeights(const std::vector<LineSegment>& edges, const std::vector<char>& keep, double& a,
                 double& b) {
+    std::vector<std::pair<double, double>> samples;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+        if (keep[i]) samples.emplace_back(static_cast<double>(i), edges[i].z);
+    return fitHeightLine(samples, a, b);
+}
+
+}  // namespace
+
+bool fitHeightLine(const std::vector<std::pair<double, double>>& samples, double& a, double& b) {
     double n = 0, si = 0, sz = 0, sii = 0, siz = 0;
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-        if (!keep[i]) continue;
+    for (const auto& [i, z] : samples) {
         n += 1;
         si += i;
-        sz += edges[i].z;
-        sii += static_cast<double>(i) * i;
-        siz += i * edges[i].z;
+        sz += z;
+        sii += i * i;
+        siz += i * z;
     }
     const double den = n * sii - si * si;
     if (n < 2 || std::abs(den) < 1e-12) return false;
@@ -46,8 +54,6 @@ bool fitHeights(const std::vector<LineSegment>& edges, const std::vector<char>& 
     a = (sz - b * si) / n;
     return true;
 }
-
-}  // namespace
 
 int raiseLowEdges(std::vector<LineSegment>& edges, double min_drop_m) {
     const std::size_t n = edges.size();

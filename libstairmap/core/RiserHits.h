@@ -4,6 +4,7 @@
 // vertically under the real nosing line (same XY, lower z) and would pass Algorithm 1's rise test
 // with the wrong height. When the nosing above it was seen too, the lower line is dropped.
 
+#include <utility>
 #include <vector>
 
 #include "core/LineSegment.h"
@@ -20,6 +21,10 @@ struct RiserHitParams {
 /// Removes the lines that lie under a higher line as described above. `lines` in any order;
 /// the order of the kept lines is preserved. O(n^2) in the number of lines (tens to hundreds).
 void dropRiserHits(std::vector<LineSegment>& lines, const RiserHitParams& params);
+
+/// Least-squares line z = a + b * index through (index, z) samples of a flight's edges; false
+/// with fewer than two distinct indices.
+bool fitHeightLine(const std::vector<std::pair<double, double>>& samples, double& a, double& b);
 
 /// When the nosing above a riser hit was not seen, the hit itself may become an edge of a flight
 /// (Algorithm 1 allows DetectorParams::edge_height_tolerance_m). Nosings lie on a straight line

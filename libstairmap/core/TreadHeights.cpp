@@ -5,6 +5,8 @@
 #include <limits>
 #include <optional>
 
+#include "core/RiserHits.h"
+
 namespace stairmap {
 namespace {
 
@@ -94,24 +96,6 @@ std::optional<double> treadHeight(const PointCloud& near_flight,
                           p.min_spread_fraction * std::abs(b - a));
 }
 
-/// Least-squares line z = a + b k through the anchors (k, z); false when fewer than two.
-bool fitLine(const std::vector<std::pair<double, double>>& anchors, double& a, double& b) {
-    if (anchors.size() < 2) return false;
-    double sk = 0, sz = 0, skk = 0, skz = 0;
-    for (const auto& [k, z] : anchors) {
-        sk += k;
-        sz += z;
-        skk += k * k;
-        skz += k * z;
-    }
-    const double m = static_cast<double>(anchors.size());
-    const double det = m * skk - sk * sk;
-    if (det <= 0) return false;
-    b = (m * skz - sk * sz) / det;
-    a = (sz - b * sk) / m;
-    return true;
-}
-
 }  // namespace
 
 int raiseEdgesToTreads(const PointCloud& cloud, double rise, double run,
@@ -127,7 +111,7 @@ int raiseEdgesToTreads(const PointCloud& cloud, double rise, double run,
     // Treads are flat and evenly stacked: anchors off the line through the others are something
     // else (a ring on a riser or a post read as a tread) and are dropped, worst first.
     double a = 0, b = 0;
-    while (fitLine(anchors, a, b) && static_cast<int>(anchors.size()) >= p.min_anchors) {
+    while (fitHeightLine(anchors, a, b) && static_cast<int>(anchors.size()) >= p.min_anchors) {
         auto worst = anchors.end();
         double worst_residual = p.max_anchor_residual_m;
         for (auto it = anchors.begin(); it != anchors.end(); ++it) {
@@ -140,7 +124,8 @@ int raiseEdgesToTreads(const PointCloud& cloud, double rise, double run,
         if (worst == anchors.end()) break;
         anchors.erase(worst);
     }
-    if (static_cast<int>(anchors.size()) < p.min_anchors || !fitLine(anchors, a, b)) return 0;
+    if (static_cast<int>(anchors.size()) < p.min_anchors || !fitHeightLine(anchors, a, b))
+        return 0;
     // Riser tops only read low: every edge under the treads' line is raised onto it.
     int raised = 0;
     for (std::size_t k = 0; k < edges.size(); ++k) {
