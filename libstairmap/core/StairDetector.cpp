@@ -18,6 +18,7 @@
 #include "core/StepExtent.h"
 #include "core/StaircaseGeometry.h"
 #include "core/TopView.h"
+#include "core/RayClearance.h"
 #include "core/TreadHeights.h"
 
 namespace stairmap {
@@ -142,12 +143,14 @@ void recordDirection(const std::vector<LineSegment>& lines, const std::vector<ch
 }
 
 /// Sparse-cloud mode, ascending: edges read on riser tops are raised to the treads behind them
-/// (TreadHeights), then the remaining low ones onto the flight's nosing line (RiserHits).
+/// (TreadHeights), all of them onto the line inside the bounds of the rays that cleared them
+/// (RayClearance), then the remaining low ones onto the flight's nosing line (RiserHits).
 void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
                           std::vector<LineSegment>& edges) {
     if (dir == StairDirection::Ascending && edges.size() >= 2) {
         const Staircase probe = makeStaircase(edges, dir, 0.0);
         raiseEdgesToTreads(cloud, probe.step_height, probe.step_depth, edges);
+        fitEdgesToRayClearance(cloud, probe.step_height, probe.step_depth, edges);
     }
     raiseLowEdges(edges, kRiserHitMinDrop);
 }

@@ -1,0 +1,124 @@
+#include "core/RayClearance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace stairmap {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Unit normal of `edge` pointing up the flight (towards the next edge, or away from the previous
+/// one for the last edge).
+Eigen::Vector2d upFlightNormal(const std::vector<LineSegment>& edges, std::size_t k) {
+    const LineSegment& e = edges[k];
+    const Eigen::Vector2d up = edges.back().centre() - edges.front().centre();
+    const Eigen::Vector2d along = (e.end - e.start).normalized();
+    Eigen::Vector2d n(-along.y(), along.x());
+    if (n.dot(up) < 0) n = -n;
+    return n;
+}
+
+/// Points of `cloud` that can bound the flight's edges: within `reach` of the edges' XY bounding
+/// box and from `z_lo` up (rays to anything higher clear the nosings by far).
+PointCloud nearFlight(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                      double reach, double z_lo, double z_hi) {
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(kInfinity), hi = -lo;
+    for (const LineSegment& e : edges) {
+        lo = lo.cwiseMin(e.start).cwiseMin(e.end);
+        hi = hi.cwiseMax(e.start).cwiseMax(e.end);
+    }
+    PointCloud out;
+    for (const Eigen::Vector3f& q : cloud) {  // NaN fails every comparison: dropped
+        if (q.x() >= lo.x() - reach && q.x() <= hi.x() + reach && q.y() >= lo.y() - reach &&
+            q.y() <= hi.y() + reach && q.z() >= z_lo && q.z() <= z_hi)
+            out.push_back(q);
+    }
+    return out;
+}
+
+}  // namespace
+
+double nosingClearance(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                       std::size_t k, double run, const RayClearanceParams& p) {
+    if (k >= edges.size() || edges.size() < 2 || !(run > 0)) return kInfinity;
+    const LineSegment& e = edges[k];
+    const Eigen::Vector2d n = upFlightNormal(edges, k);
+    const Eigen::Vector2d u(-n.y(), n.x());
+    const Eigen::Vector2d c = e.centre();
+    const double edge_range = n.dot(c);  // the sensor (origin) must look at the riser's face
+    if (!(edge_range > p.min_behind_m)) return kInfinity;
+    const double a = u.dot(e.start - c), b = u.dot(e.end - c);
+    const double trim = p.end_fraction * std::abs(b - a);
+    const double beside_lo = std::min(a, b) + trim, beside_hi = std::max(a, b) - trim;
+    const double max_behind = p.max_behind_runs * run;
+    std::vector<double> clearances;
+    for (const Eigen::Vector3f& q : cloud) {
+        const Eigen::Vector2d xy(q.x(), q.y());
+        const double range = n.dot(xy);
+        const double behind = range - edge_range;
+        if (!(behind >= p.min_behind_m && behind <= max_behind)) continue;  // NaN too
+        const double t = edge_range / range;  // where the ray from the origin crosses the line
+        const double beside = u.dot(t * xy - c);
+        if (beside < beside_lo || beside > beside_hi) continue;
+        const double h = t * q.z();
+        if (h < e.z - p.under_slack_m) continue;  // passed under the tread or beside the flight
+        clearances.push_back(h);
+    }
+    const std::size_t rank = static_cast<std::size_t>(std::max(1, p.clearance_rank));
+    if (clearances.size() < rank) return kInfinity;
+    std::nth_element(clearances.begin(), clearances.begin() + (rank - 1), clearances.end());
+    return clearances[rank - 1];
+}
+
+int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
+                           std::vector<LineSegment>& edges, const RayClearanceParams& p) {
+    if (edges.size() < 2 || !(rise > 0) || !(run > 0)) return 0;
+    double z_lo = kInfinity;
+    for (const LineSegment& e : edges) z_lo = std::min(z_lo, e.z);
+    const double reach = p.max_behind_runs * run + p.min_behind_m;
+    const double z_hi = edges.back().z + (p.max_behind_runs + 2.0) * rise;
+    const PointCloud near = nearFlight(cloud, edges, reach, z_lo - p.under_slack_m, z_hi);
+    std::vector<double> upper(edges.size());
+    int bounded = 0;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        upper[k] = nosingClearance(near, edges, k, run, p);
+        if (std::isfinite(upper[k])) ++bounded;
+    }
+    if (bounded < p.min_bounded_edges) return 0;
+    // Lines z = a + b k inside every interval: for each rise b the offsets a form an interval;
+    // the centroid of that feasible set (weighted by its width) is the estimate.
+    double weight = 0, b_sum = 0, a_sum = 0;
+    const int steps = static_cast<int>(std::ceil(p.rise_search_m / p.rise_step_m));
+    for (int s = -steps; s <= steps; ++s) {
+        const double b = rise + s * p.rise_step_m;
+        double a_lo = -kInfinity, a_hi = kInfinity;
+        for (std::size_t k = 0; k < edges.size(); ++k) {
+            a_lo = std::max(a_lo, edges[k].z - p.tolerance_m - b * k);
+            if (std::isfinite(upper[k])) a_hi = std::min(a_hi, upper[k] + p.tolerance_m - b * k);
+        }
+        if (a_hi < a_lo) continue;
+        const double w = a_hi - a_lo + 1e-4;  // a single feasible line still counts
+        weight += w;
+        b_sum += w * b;
+        a_sum += w * 0.5 * (a_lo + a_hi);
+    }
+    if (weight <= 0) return 0;
+    const double a = a_sum / weight, b = b_sum / weight;
+    double a_lo = -kInfinity, a_hi = kInfinity;  // the feasible offsets at the estimated rise
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        a_lo = std::max(a_lo, edges[k].z - p.tolerance_m - b * k);
+        if (std::isfinite(upper[k])) a_hi = std::min(a_hi, upper[k] + p.tolerance_m - b * k);
+    }
+    if (a_hi - a_lo > p.max_feasible_width_m) return 0;  // rings in step with the rise: no fix
+    int moved = 0;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const double z = a + b * static_cast<double>(k);
+        if (std::abs(z - edges[k].z) > 1e-3) ++moved;
+        edges[k].z = z;
+    }
+    return moved;
+}
+
+}  // namespace stairmap

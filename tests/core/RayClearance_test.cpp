@@ -1,0 +1,122 @@
+// Nosing heights bounded by the rays that cleared them: a sparse LiDAR's riser-top edges are moved
+// onto the line inside [riser hit, ray clearance] of every step.
+#include "core/RayClearance.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace stairmap {
+namespace {
+
+/// A closed-riser flight along +x seen by a level multi-ring LiDAR at the origin: nosing k at
+/// x0 + k run, height z_first + k rise; floor below, landing behind the last step.
+struct Flight {
+    double x0 = 4.0, run = 0.28, rise = 0.19, floor_z = -0.5;
+    int steps = 6;
+    double nosingZ(int k) const { return floor_z + (k + 1) * rise; }
+    double nosingX(int k) const { return x0 + k * run; }
+    /// Height of the surface at horizontal distance x along the flight.
+    double surface(double x) const {
+        if (x < x0) return floor_z;
+        const int k = std::min(steps - 1, static_cast<int>(std::floor((x - x0) / run)));
+        return nosingZ(k);
+    }
+};
+
+/// Ray-casts rings 2 deg apart (a VLP-16's 16 rings at -15..15 deg) over azimuths +-6 deg: the
+/// first point where each ray meets the flight's profile (1 mm steps along the ground).
+PointCloud scanFlight(const Flight& f) {
+    PointCloud cloud;
+    for (int ring = 0; ring < 16; ++ring) {
+        const double slope = std::tan((-15.0 + 2.0 * ring) * M_PI / 180.0);
+        for (double az = -6.0; az <= 6.0; az += 0.2) {
+            const double c = std::cos(az * M_PI / 180.0), s = std::sin(az * M_PI / 180.0);
+            for (double r = 0.5; r < 12.0; r += 0.001) {
+                const double x = r * c, z = slope * r;
+                if (z <= f.surface(x)) {
+                    cloud.emplace_back(x, r * s, z);
+                    break;
+                }
+            }
+        }
+    }
+    return cloud;
+}
+
+/// Edge k as the top view finds it: across the flight at the riser, at the height of the highest
+/// point on riser k (a riser hit, below its nosing).
+LineSegment riserTopEdge(const PointCloud& cloud, const Flight& f, int k) {
+    double top = -std::numeric_limits<double>::infinity();
+    for (const auto& q : cloud)
+        if (std::abs(q.x() - f.nosingX(k)) < 0.01 && std::abs(q.y()) < 0.45 && q.z() < f.nosingZ(k))
+            top = std::max(top, static_cast<double>(q.z()));
+    LineSegment l;
+    l.start = {f.nosingX(k), -0.45};
+    l.end = {f.nosingX(k), 0.45};
+    l.z = top;
+    l.rho = f.nosingX(k);
+    l.num_points = 20;
+    return l;
+}
+
+TEST(RayClearance, RiserTopEdgesOfAFarFlightMoveOntoTheNosings) {
+    Flight f;
+    const PointCloud cloud = scanFlight(f);
+    std::vector<LineSegment> edges;
+    double worst_before = 0;
+    for (int k = 0; k < f.steps - 1; ++k) {
+        edges.push_back(riserTopEdge(cloud, f, k));
+        ASSERT_TRUE(std::isfinite(edges.back().z)) << "riser " << k << " not hit";
+        worst_before = std::max(worst_before, f.nosingZ(k) - edges.back().z);
+    }
+    ASSERT_GT(worst_before, 0.06);  // the case this fixes: riser tops well under their nosings
+    const double measured_rise = (edges.back().z - edges.front().z) / (edges.size() - 1);
+    EXPECT_GT(fitEdgesToRayClearance(cloud, measured_rise, f.run, edges), 0);
+    for (int k = 0; k < f.steps - 1; ++k)
+        EXPECT_NEAR(edges[k].z, f.nosingZ(k), 0.03) << "edge " << k;
+}
+
+TEST(RayClearance, ClearanceIsWhereTheRayToAPointBehindCrossesTheNosing) {
+    std::vector<LineSegment> edges(2);
+    for (int k = 0; k < 2; ++k) {
+        edges[k].start = {4.0 + 0.3 * k, -0.5};
+        edges[k].end = {4.0 + 0.3 * k, 0.5};
+        edges[k].z = 0.1 + 0.17 * k;
+    }
+    // Three points 0.2 m behind the first edge at 0.5 m height: their rays from the origin cross
+    // x = 4 at 0.5 * 4 / 4.2; a point beside the flight and one under the tread do not count.
+    PointCloud cloud = {{4.2f, 0.0f, 0.5f}, {4.2f, 0.1f, 0.5f}, {4.2f, -0.1f, 0.5f},
+                        {4.2f, 2.0f, 0.3f}, {4.2f, 0.0f, 0.0f}};
+    EXPECT_NEAR(nosingClearance(cloud, edges, 0, 0.3), 0.5 * 4.0 / 4.2, 1e-6);
+    cloud.resize(2);  // fewer rays than clearance_rank: no bound
+    EXPECT_TRUE(std::isinf(nosingClearance(cloud, edges, 0, 0.3)));
+}
+
+TEST(RayClearance, NothingMovesWithoutBoundsOrWhenTheyPinNothing) {
+    Flight f;
+    std::vector<LineSegment> edges;
+    const PointCloud cloud = scanFlight(f);
+    for (int k = 0; k < f.steps - 1; ++k) edges.push_back(riserTopEdge(cloud, f, k));
+    const std::vector<LineSegment> before = edges;
+    const double rise = (edges.back().z - edges.front().z) / (edges.size() - 1);
+    EXPECT_EQ(fitEdgesToRayClearance(PointCloud{}, rise, f.run, edges), 0);
+    RayClearanceParams narrow;
+    narrow.max_feasible_width_m = 0.001;  // the bounds span more than this: left alone
+    EXPECT_EQ(fitEdgesToRayClearance(cloud, rise, f.run, edges, narrow), 0);
+    PointCloud hostile = cloud;
+    hostile.emplace_back(std::nanf(""), 0.0f, 0.0f);
+    hostile.emplace_back(std::numeric_limits<float>::infinity(), 0.0f, 0.5f);
+    std::vector<LineSegment> with_hostile = edges;
+    fitEdgesToRayClearance(hostile, rise, f.run, with_hostile);
+    std::vector<LineSegment> clean = edges;
+    fitEdgesToRayClearance(cloud, rise, f.run, clean);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        EXPECT_EQ(edges[k].z, before[k].z);
+        EXPECT_DOUBLE_EQ(with_hostile[k].z, clean[k].z);  // non-finite points are ignored
+    }
+}
+
+}  // namespace
+}  // namespace stairmap
