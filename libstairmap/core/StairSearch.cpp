@@ -13,6 +13,14 @@ constexpr double kBetweenDz = 0.02;  ///< [m] a blocking line is this far from b
 /// [m] an edge across one unseen nosing must be twice the chain's rise within this (or the
 /// sparse-cloud height tolerance, if larger)
 constexpr double kGapRiseTolerance = 0.03;
+/// [-] runs are uniform (building codes): a straight chain's next pair whose run per step is more
+/// than this factor longer or shorter than the chain's first pair's is not a step of the same
+/// flight (a nosing stepped over reads 2x, a stray line between two nosings 0.5x; 1.5x lies
+/// between them)
+constexpr double kMaxRunRatio = 1.5;
+/// [deg] a pair turned this far from the chain's first pair is on a turning (spiral) flight, whose
+/// wedge treads' perpendicular spacing varies: the run ratio is not applied to it
+constexpr double kTurningDeg = 20.0;
 
 /// Common extent [lo, hi] of two segments along u.
 std::pair<double, double> commonExtent(const LineSegment& a, const LineSegment& b,
@@ -43,7 +51,17 @@ struct Candidate {
     double rise = 0.0;  ///< [m] rise per nosing of the latest pair
     Eigen::Vector2d first_normal = Eigen::Vector2d::Zero();  ///< of the lowest pair
     double first_rise = 0.0;                                 ///< [m] of the lowest pair
+    double run = 0.0;  ///< [m] run of the initial pair (one step)
 };
+
+/// Is a pair `steps` nosings apart, with run `pair.run` and turned to `pair.normal`, a step of
+/// the chain's flight as far as the run goes (see kMaxRunRatio)?
+bool runFitsChain(const StairPair& pair, int steps, const Candidate& c) {
+    if (!(c.run > 0) || pair.normal.dot(c.first_normal) < std::cos(kTurningDeg * kDegToRad))
+        return true;
+    const double per_step = pair.run / steps;
+    return per_step <= kMaxRunRatio * c.run && kMaxRunRatio * per_step >= c.run;
+}
 
 /// Definition 1 for a pair of edges `steps` nosings apart (1 = consecutive): rise and run bounds
 /// scaled by the number of steps, the chain's own rise within the height tolerance.
@@ -76,7 +94,8 @@ int nextEdge(const std::vector<LineSegment>& lines, const std::vector<char>& use
     for (int j = b; j < e; ++j) {
         if (used[j] || std::find(c.steps.begin(), c.steps.end(), j) != c.steps.end()) continue;
         const auto pair = checkStepsApart(lines[last], lines[j], steps, chain_rise, p);
-        if (!pair || pair->normal.dot(c.normal) < std::cos(p.max_parallel_deg * kDegToRad))
+        if (!pair || pair->normal.dot(c.normal) < std::cos(p.max_parallel_deg * kDegToRad) ||
+            !runFitsChain(*pair, steps, c))
             continue;
         // Across an unseen nosing, what is left of it (a broken or short line) is no obstacle.
         const double expected_z = steps == 1 ? std::numeric_limits<double>::quiet_NaN()
@@ -122,7 +141,8 @@ int previousEdge(const std::vector<LineSegment>& lines, const std::vector<char>&
     for (int j = b; j < e; ++j) {
         if (used[j] || std::find(c.steps.begin(), c.steps.end(), j) != c.steps.end()) continue;
         const auto pair = checkStepsApart(lines[j], lines[first], steps, c.first_rise, p);
-        if (!pair || pair->normal.dot(c.first_normal) < std::cos(p.max_parallel_deg * kDegToRad))
+        if (!pair || pair->normal.dot(c.first_normal) < std::cos(p.max_parallel_deg * kDegToRad) ||
+            !runFitsChain(*pair, steps, c))
             continue;
         const double expected_z = steps == 1 ? std::numeric_limits<double>::quiet_NaN()
                                              : 0.5 * (lines[j].z + z);
@@ -166,7 +186,7 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
             if (used[j]) continue;
             const auto pair = checkStairPair(lines[i], lines[j], p);
             if (!pair || hasLineBetween(lines, i, j, *pair, p)) continue;
-            Candidate c{{i, j}, pair->normal, pair->rise, pair->normal, pair->rise};
+            Candidate c{{i, j}, pair->normal, pair->rise, pair->normal, pair->rise, pair->run};
             extend(lines, used, p, c);
             if (c.steps.size() > best.steps.size()) best = c;
         }

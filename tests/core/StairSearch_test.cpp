@@ -1,0 +1,45 @@
+// Algorithm 1's chain search on hand-made nosing lines: runs are uniform along a straight flight.
+#include "core/StairSearch.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace stairmap {
+namespace {
+
+/// A nosing line across y in [-0.5, 0.5] at distance x, height z (its normal along +x).
+LineSegment nosing(double x, double z) {
+    LineSegment l;
+    l.start = {x, -0.5};
+    l.end = {x, 0.5};
+    l.z = z;
+    l.rho = x;
+    l.theta = 0.0;
+    l.num_points = 20;
+    return l;
+}
+
+/// Four nosings 0.17 m apart in height, the first three 0.25 m apart; the fourth `last_run` [m]
+/// behind the third. Returns the longest chain found (indices into the lines).
+std::vector<int> chainWithLastRun(double last_run) {
+    const std::vector<LineSegment> lines = {nosing(1.0, 0.17), nosing(1.25, 0.34),
+                                            nosing(1.50, 0.51), nosing(1.50 + last_run, 0.68)};
+    DetectorParams p;
+    p.min_steps = 3;
+    const auto chains = searchStaircases(lines, 0.0, p.floor_tolerance_m, p);
+    return chains.empty() ? std::vector<int>{} : chains.front();
+}
+
+TEST(StairSearch, AStepWithTheFlightsRunContinuesTheChain) {
+    EXPECT_EQ(chainWithLastRun(0.30), (std::vector<int>{0, 1, 2, 3}));  // 1.2x the run
+}
+
+TEST(StairSearch, AStepTwiceAsDeepIsNotPartOfTheFlight) {
+    // 0.45 m passes Definition 1 on its own (run <= 0.45 m, slope 20.7 deg) but is 1.8x the
+    // flight's run: a nosing stepped over with a wrong rise, or another structure.
+    EXPECT_EQ(chainWithLastRun(0.45), (std::vector<int>{0, 1, 2}));
+}
+
+}  // namespace
+}  // namespace stairmap
