@@ -146,6 +146,20 @@ void applyScan(const TreadScan& t, const StepExtentParams& p, StairEdge& e, Side
     if (hi > t.edge_hi) e.end = c + (t.t0 + (hi + 1) * p.bin_m) * u;
 }
 
+/// The flight's width from its measured steps' `widths` (the steps of one flight are equally
+/// wide). With a side unseen every step reads at most its true width (its end out of view, hidden
+/// by the floor's edge or a nearer step): the widest step is the best estimate. With both sides
+/// bounded the extents end at the walls or open edges; a shorter one lost part of its tread to a
+/// gap in a far row, a longer one ran onto a surface at tread height beside the flight: the upper
+/// quartile. (Dev set: width MAE 10.9 -> 7.6 cm, with both sides bounded 6.2 -> 5.5 cm; the
+/// widest step for bounded flights too gave 6.2 cm there, the upper quartile for all 8.8 cm.)
+double flightWidth(std::vector<double> widths, const Staircase& stairs) {
+    std::sort(widths.begin(), widths.end());
+    if (stairs.left_side == StairSide::Unseen || stairs.right_side == StairSide::Unseen)
+        return widths.back();
+    return widths[(widths.size() * 3) / 4];
+}
+
 }  // namespace
 
 void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepExtentParams& p) {
@@ -177,6 +191,9 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
     stairs.left_side = left.result();
     stairs.right_side = right.result();
     estimateGeometry(stairs);
+    std::vector<double> widths;
+    for (const TreadScan& t : scans) widths.push_back(stairs.steps[t.step].length());
+    if (widths.size() >= 2) stairs.step_width = flightWidth(widths, stairs);
 }
 
 }  // namespace stairmap

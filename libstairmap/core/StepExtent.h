@@ -9,7 +9,9 @@
 //  - Wall:   points rising above the tread just beyond its end (a wall, a railing's posts);
 //  - Open:   no such points, but the floor or a drop (points well below the tread) seen there;
 //  - Unseen: no points beyond the end: the view does not cover it, the width may be short.
-// Edges are lengthened to the measured extent (never shortened), then the geometry re-estimated.
+// Edges are lengthened to the measured extent (never shortened), then the geometry re-estimated;
+// the flight's width is its widest step when a side is unseen (every step reads short there), else
+// the upper quartile of its steps' widths.
 
 #include "core/PointCloud.h"
 #include "core/Staircase.h"

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "core/StairDetector.h"
 #include "core/StaircaseGeometry.h"
@@ -74,6 +76,31 @@ TEST(StepExtent, ASideTheViewDoesNotCoverIsUnseenAndTheWidthIsWhatWasSeen) {
     EXPECT_EQ(s.right_side, StairSide::Unseen);
     EXPECT_EQ(s.left_side, StairSide::Unseen);  // no wall, no floor beyond the left end either
     EXPECT_NEAR(s.step_width, kHalfWidth + 0.4, 0.05);
+}
+
+TEST(StepExtent, WithASideUnseenTheFlightIsAsWideAsItsWidestStep) {
+    // A wall on the left; on the right each tread is seen to a different point (the floor's edge
+    // or a nearer step hides the rest), step 2 to its true end; nothing seen beyond any of them.
+    const double seen_to[kSteps] = {-0.2, -0.5, -kHalfWidth, -0.3, -0.1, -0.1};
+    PointCloud cloud;
+    for (int k = 0; k < kSteps; ++k) {
+        const double x_end = k + 1 < kSteps ? nosingX(k + 1) : nosingX(k) + 1.0;
+        for (double x = nosingX(k); x < x_end; x += 0.02) {
+            for (double y = seen_to[k]; y <= kHalfWidth; y += 0.02)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(treadZ(k)));
+            for (double z = treadZ(k); z < treadZ(k) + 1.2; z += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(kHalfWidth + 0.03), static_cast<float>(z));
+        }
+    }
+    Staircase s = pieces();
+    measureStepExtents(cloud, s);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Unseen);
+    std::vector<double> widths;
+    for (int k = 0; k + 1 < kSteps; ++k) widths.push_back(s.steps[k].length());
+    std::sort(widths.begin(), widths.end());
+    ASSERT_LT(widths[widths.size() / 2], 2 * kHalfWidth - 0.2);  // most steps read short
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
 }
 
 TEST(StepExtent, EmptyCloudAndTinyStaircasesChangeNothing) {
