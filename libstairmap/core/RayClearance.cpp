@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace stairmap {
 namespace {
@@ -36,6 +37,19 @@ PointCloud nearFlight(const PointCloud& cloud, const std::vector<LineSegment>& e
             out.push_back(q);
     }
     return out;
+}
+
+/// Offsets [a_lo, a_hi] of the lines z = a + b k with rise `b` inside every edge's bounds
+/// [edge z, upper] widened by `tolerance` (empty when a_hi < a_lo).
+std::pair<double, double> feasibleOffsets(const std::vector<LineSegment>& edges,
+                                          const std::vector<double>& upper, double b,
+                                          double tolerance) {
+    double a_lo = -kInfinity, a_hi = kInfinity;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        a_lo = std::max(a_lo, edges[k].z - tolerance - b * k);
+        if (std::isfinite(upper[k])) a_hi = std::min(a_hi, upper[k] + tolerance - b * k);
+    }
+    return {a_lo, a_hi};
 }
 
 }  // namespace
@@ -93,11 +107,7 @@ int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
     const int steps = static_cast<int>(std::ceil(p.rise_search_m / p.rise_step_m));
     for (int s = -steps; s <= steps; ++s) {
         const double b = rise + s * p.rise_step_m;
-        double a_lo = -kInfinity, a_hi = kInfinity;
-        for (std::size_t k = 0; k < edges.size(); ++k) {
-            a_lo = std::max(a_lo, edges[k].z - p.tolerance_m - b * k);
-            if (std::isfinite(upper[k])) a_hi = std::min(a_hi, upper[k] + p.tolerance_m - b * k);
-        }
+        const auto [a_lo, a_hi] = feasibleOffsets(edges, upper, b, p.tolerance_m);
         if (a_hi < a_lo) continue;
         const double w = a_hi - a_lo + 1e-4;  // a single feasible line still counts
         weight += w;
@@ -106,11 +116,7 @@ int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
     }
     if (weight <= 0) return 0;
     const double a = a_sum / weight, b = b_sum / weight;
-    double a_lo = -kInfinity, a_hi = kInfinity;  // the feasible offsets at the estimated rise
-    for (std::size_t k = 0; k < edges.size(); ++k) {
-        a_lo = std::max(a_lo, edges[k].z - p.tolerance_m - b * k);
-        if (std::isfinite(upper[k])) a_hi = std::min(a_hi, upper[k] + p.tolerance_m - b * k);
-    }
+    const auto [a_lo, a_hi] = feasibleOffsets(edges, upper, b, p.tolerance_m);
     if (a_hi - a_lo > p.max_feasible_width_m) return 0;  // rings in step with the rise: no fix
     int moved = 0;
     for (std::size_t k = 0; k < edges.size(); ++k) {
