@@ -21,7 +21,10 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string writeIni(const std::string& name, const std::string& text) {
-    const fs::path dir = fs::path(STAIRMAP_TEST_TMP) / "io_strict_ini";
+    // One folder per test: ctest -j runs these tests in parallel processes, and a shared
+    // config.ini was overwritten by one test while another loaded it.
+    const fs::path dir = fs::path(STAIRMAP_TEST_TMP) / "io_strict_ini" /
+                         testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::create_directories(dir);
     const std::string path = (dir / name).string();
     std::ofstream(path) << text;
