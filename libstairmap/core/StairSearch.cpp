@@ -14,7 +14,7 @@ constexpr double kBetweenDz = 0.02;  ///< [m] a blocking line is this far from b
 /// sparse-cloud height tolerance, if larger)
 constexpr double kGapRiseTolerance = 0.03;
 /// [-] runs are uniform (building codes): a straight chain's next pair whose run per step is more
-/// than this factor longer or shorter than the chain's first pair's is not a step of the same
+/// than this factor longer or shorter than the chain's median run is not a step of the same
 /// flight (a nosing stepped over reads 2x, a stray line between two nosings 0.5x; 1.5x lies
 /// between them)
 constexpr double kMaxRunRatio = 1.5;
@@ -51,16 +51,37 @@ struct Candidate {
     double rise = 0.0;  ///< [m] rise per nosing of the latest pair
     Eigen::Vector2d first_normal = Eigen::Vector2d::Zero();  ///< of the lowest pair
     double first_rise = 0.0;                                 ///< [m] of the lowest pair
-    double run = 0.0;  ///< [m] run of the initial pair (one step)
+    /// [m] run per step of every pair taken so far that is not turned (see kTurningDeg),
+    /// the initial pair first
+    std::vector<double> runs;
 };
+
+/// Is the pair turned from the chain's first pair, as on a turning (spiral) flight?
+bool turned(const StairPair& pair, const Candidate& c) {
+    return pair.normal.dot(c.first_normal) < std::cos(kTurningDeg * kDegToRad);
+}
+
+/// [m] the chain's run: the median of its straight pairs' runs (the larger middle one for an even
+/// count). One wrong pair, the first one included, does not set the run the others must match.
+double chainRun(const Candidate& c) {
+    thread_local std::vector<double> v;
+    v.assign(c.runs.begin(), c.runs.end());
+    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+/// Records a pair taken into the chain, `steps` nosings apart.
+void addRun(const StairPair& pair, int steps, Candidate& c) {
+    if (!turned(pair, c)) c.runs.push_back(pair.run / steps);
+}
 
 /// Is a pair `steps` nosings apart, with run `pair.run` and turned to `pair.normal`, a step of
 /// the chain's flight as far as the run goes (see kMaxRunRatio)?
 bool runFitsChain(const StairPair& pair, int steps, const Candidate& c) {
-    if (!(c.run > 0) || pair.normal.dot(c.first_normal) < std::cos(kTurningDeg * kDegToRad))
-        return true;
-    const double per_step = pair.run / steps;
-    return per_step <= kMaxRunRatio * c.run && kMaxRunRatio * per_step >= c.run;
+    if (c.runs.empty() || turned(pair, c)) return true;
+    const double per_step = pair.run / steps, run = chainRun(c);
+    return per_step <= kMaxRunRatio * run && kMaxRunRatio * per_step >= run;
 }
 
 /// Definition 1 for a pair of edges `steps` nosings apart (1 = consecutive): rise and run bounds
@@ -120,7 +141,9 @@ void extend(const std::vector<LineSegment>& lines, const std::vector<char>& used
         if (best < 0) best = nextEdge(lines, used, p, c, steps = 2);
         if (best < 0) return;
         // Follow a turning (spiral) flight: compare the next pair with the latest direction.
-        c.normal = checkStepsApart(lines[last], lines[best], steps, c.rise, p)->normal;
+        const StairPair pair = *checkStepsApart(lines[last], lines[best], steps, c.rise, p);
+        addRun(pair, steps, c);
+        c.normal = pair.normal;
         c.rise = (lines[best].z - lines[last].z) / steps;
         c.steps.push_back(best);
     }
@@ -167,7 +190,9 @@ void extendDown(const std::vector<LineSegment>& lines, const std::vector<char>& 
         int best = previousEdge(lines, used, p, c, 1);
         if (best < 0) best = previousEdge(lines, used, p, c, steps = 2);
         if (best < 0) return;
-        c.first_normal = checkStepsApart(lines[best], lines[first], steps, c.first_rise, p)->normal;
+        const StairPair pair = *checkStepsApart(lines[best], lines[first], steps, c.first_rise, p);
+        addRun(pair, steps, c);
+        c.first_normal = pair.normal;
         c.first_rise = (lines[first].z - lines[best].z) / steps;
         c.steps.insert(c.steps.begin(), best);
     }
@@ -186,7 +211,7 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
             if (used[j]) continue;
             const auto pair = checkStairPair(lines[i], lines[j], p);
             if (!pair || hasLineBetween(lines, i, j, *pair, p)) continue;
-            Candidate c{{i, j}, pair->normal, pair->rise, pair->normal, pair->rise, pair->run};
+            Candidate c{{i, j}, pair->normal, pair->rise, pair->normal, pair->rise, {pair->run}};
             extend(lines, used, p, c);
             if (c.steps.size() > best.steps.size()) best = c;
         }

@@ -41,5 +41,18 @@ TEST(StairSearch, AStepTwiceAsDeepIsNotPartOfTheFlight) {
     EXPECT_EQ(chainWithLastRun(0.45), (std::vector<int>{0, 1, 2}));
 }
 
+TEST(StairSearch, AShortFirstPairDoesNotSetTheRunOfTheFlight) {
+    // Runs 0.20, 0.28, 0.31, 0.30 m: the first pair reads short (a line near the robot cut
+    // short), the third is 1.55x its run but within 1.5x of the chain's median run.
+    const std::vector<LineSegment> lines = {nosing(1.0, 0.17), nosing(1.20, 0.34),
+                                            nosing(1.48, 0.51), nosing(1.79, 0.68),
+                                            nosing(2.09, 0.85)};
+    DetectorParams p;
+    p.min_steps = 3;
+    const auto chains = searchStaircases(lines, 0.0, p.floor_tolerance_m, p);
+    ASSERT_EQ(chains.size(), 1u);
+    EXPECT_EQ(chains.front(), (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
 }  // namespace
 }  // namespace stairmap
