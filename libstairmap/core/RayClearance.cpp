@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "core/FlightPoints.h"
+
 namespace stairmap {
 namespace {
 
@@ -19,24 +21,6 @@ Eigen::Vector2d upFlightNormal(const std::vector<LineSegment>& edges, std::size_
     Eigen::Vector2d n(-along.y(), along.x());
     if (n.dot(up) < 0) n = -n;
     return n;
-}
-
-/// Points of `cloud` that can bound the flight's edges: within `reach` of the edges' XY bounding
-/// box and from `z_lo` up (rays to anything higher clear the nosings by far).
-PointCloud nearFlight(const PointCloud& cloud, const std::vector<LineSegment>& edges,
-                      double reach, double z_lo, double z_hi) {
-    Eigen::Vector2d lo = Eigen::Vector2d::Constant(kInfinity), hi = -lo;
-    for (const LineSegment& e : edges) {
-        lo = lo.cwiseMin(e.start).cwiseMin(e.end);
-        hi = hi.cwiseMax(e.start).cwiseMax(e.end);
-    }
-    PointCloud out;
-    for (const Eigen::Vector3f& q : cloud) {  // NaN fails every comparison: dropped
-        if (q.x() >= lo.x() - reach && q.x() <= hi.x() + reach && q.y() >= lo.y() - reach &&
-            q.y() <= hi.y() + reach && q.z() >= z_lo && q.z() <= z_hi)
-            out.push_back(q);
-    }
-    return out;
 }
 
 /// Offsets [a_lo, a_hi] of the lines z = a + b k with rise `b` inside every edge's bounds
@@ -93,7 +77,8 @@ int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
     for (const LineSegment& e : edges) z_lo = std::min(z_lo, e.z);
     const double reach = p.max_behind_runs * run + p.min_behind_m;
     const double z_hi = edges.back().z + (p.max_behind_runs + 2.0) * rise;
-    const PointCloud near = nearFlight(cloud, edges, reach, z_lo - p.under_slack_m, z_hi);
+    // Points that can bound the edges: rays to anything higher clear the nosings by far.
+    const PointCloud near = pointsNearEdges(cloud, edges, reach, z_lo - p.under_slack_m, z_hi);
     std::vector<double> upper(edges.size());
     int bounded = 0;
     for (std::size_t k = 0; k < edges.size(); ++k) {

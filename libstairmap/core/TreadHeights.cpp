@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/FlightPoints.h"
 #include "core/RiserHits.h"
 
 namespace stairmap {
@@ -42,30 +43,6 @@ std::optional<double> lowestFlatBand(const std::vector<TreadSample>& samples, do
     return std::nullopt;
 }
 
-/// Points of `cloud` that can be on a tread of the flight: inside the edges' XY bounding box grown
-/// by `margin`, between the lowest edge's `z_lo` below and the highest's `z_hi` above.
-PointCloud flightPoints(const PointCloud& cloud, const std::vector<LineSegment>& edges,
-                        double margin, double z_lo, double z_hi) {
-    Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
-    Eigen::Vector3f hi = -lo;
-    for (const LineSegment& e : edges) {
-        for (const Eigen::Vector2d& q : {e.start, e.end}) {
-            const Eigen::Vector3f v(q.x(), q.y(), e.z);
-            lo = lo.cwiseMin(v);
-            hi = hi.cwiseMax(v);
-        }
-    }
-    lo -= Eigen::Vector3f(margin, margin, z_lo);
-    hi += Eigen::Vector3f(margin, margin, z_hi);
-    PointCloud out;
-    for (const Eigen::Vector3f& q : cloud) {  // NaN fails every comparison: dropped
-        if (q.x() >= lo.x() && q.x() <= hi.x() && q.y() >= lo.y() && q.y() <= hi.y() &&
-            q.z() >= lo.z() && q.z() <= hi.z())
-            out.push_back(q);
-    }
-    return out;
-}
-
 /// The tread height behind edge k (see lowestFlatBand), or none.
 std::optional<double> treadHeight(const PointCloud& near_flight,
                                   const std::vector<LineSegment>& edges, std::size_t k,
@@ -101,8 +78,15 @@ std::optional<double> treadHeight(const PointCloud& near_flight,
 int raiseEdgesToTreads(const PointCloud& cloud, double rise, double run,
                        std::vector<LineSegment>& edges, const TreadHeightParams& p) {
     if (edges.size() < 2 || !(rise > 0) || !(run > 0)) return 0;
-    const PointCloud near_flight =
-        flightPoints(cloud, edges, run, p.below_m, p.max_raise_fraction * rise);
+    // Points that can be on a tread: within a run of the edges, from below_m under the lowest edge
+    // to the highest raise above the highest.
+    double z_lo = std::numeric_limits<double>::infinity(), z_hi = -z_lo;
+    for (const LineSegment& e : edges) {
+        z_lo = std::min(z_lo, e.z);
+        z_hi = std::max(z_hi, e.z);
+    }
+    const PointCloud near_flight = pointsNearEdges(cloud, edges, run, z_lo - p.below_m,
+                                                   z_hi + p.max_raise_fraction * rise);
     std::vector<std::pair<double, double>> anchors;  // (step index, tread height)
     for (std::size_t k = 0; k < edges.size(); ++k) {
         const auto tread = treadHeight(near_flight, edges, k, rise, run, p);

@@ -1,0 +1,46 @@
+// The crop around a flight's edges used by the sparse-cloud corrections.
+#include "core/FlightPoints.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace stairmap {
+namespace {
+
+LineSegment edge(double x, double y0, double y1, double z) {
+    LineSegment l;
+    l.start = {x, y0};
+    l.end = {x, y1};
+    l.z = z;
+    return l;
+}
+
+TEST(FlightPoints, KeepsPointsInTheGrownBoxAndTheHeightBand) {
+    // Edges span x 2..2.5, y -0.5..0.5; grown by 0.3 m: x 1.7..2.8, y -0.8..0.8.
+    const std::vector<LineSegment> edges = {edge(2.0, -0.5, 0.5, 0.1), edge(2.5, -0.4, 0.5, 0.3)};
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const PointCloud cloud = {
+        {1.75f, 0.0f, 0.2f},   // inside the margin before the first edge
+        {2.75f, -0.75f, 0.0f},  // inside, near a corner of the grown box
+        {1.65f, 0.0f, 0.2f},   // 5 cm beyond the margin in x
+        {2.2f, 0.85f, 0.2f},   // beyond it in y
+        {2.2f, 0.0f, -0.15f},  // below the band
+        {2.2f, 0.0f, 0.65f},   // above it
+        {nan, 0.0f, 0.2f},     // not finite
+        {2.2f, 0.0f, nan},
+    };
+    const PointCloud kept = pointsNearEdges(cloud, edges, 0.3, -0.1, 0.6);
+    ASSERT_EQ(kept.size(), 2u);
+    EXPECT_FLOAT_EQ(kept[0].x(), 1.75f);
+    EXPECT_FLOAT_EQ(kept[1].x(), 2.75f);
+}
+
+TEST(FlightPoints, NoEdgesKeepNothing) {
+    const PointCloud cloud = {{0.f, 0.f, 0.f}, {1.f, 1.f, 0.5f}};
+    EXPECT_TRUE(pointsNearEdges(cloud, {}, 1.0, -1.0, 1.0).empty());
+}
+
+}  // namespace
+}  // namespace stairmap
