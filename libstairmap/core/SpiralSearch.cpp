@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "core/MissingNosings.h"
 
@@ -211,6 +212,68 @@ std::vector<Radial> withBackEdges(const SpiralLines& sl, const Helix& h, std::ve
     return in;
 }
 
+/// The nosings' helix fitted to nosings and back edges together, a back edge at its tread's
+/// height plus one rise (where its angle is the next nosing's): phi = phi0 + omega (z' - z0). The
+/// axis is refitted to all their lines. False when the lines do not determine it.
+bool refitOnNosingsAndBackEdges(const SpiralLines& sl, const std::vector<Radial>& in, double rise,
+                                const SpiralSearchParams& p, Helix& h) {
+    Helix g = h;
+    std::vector<Radial> axis_lines = in;
+    for (Radial& r : axis_lines) r.rot = 0.0;
+    if (!refitHelix(sl, axis_lines, g)) return false;  // the axis (omega refitted below)
+    double sz = 0, sp = 0, szz = 0, szp = 0;
+    int n = 0;
+    Radial about;
+    for (const Radial& r : in) {
+        if (!asRadial(sl, r.index, g.axis, p, about)) continue;
+        const double dz = r.z + (r.rot != 0.0 ? rise : 0.0) - h.z0;
+        const double pred = h.phi0 + h.omega * dz;  // unwrap against the helix before
+        const double phi = pred + wrapAngle(about.phi - pred);
+        sz += dz, sp += phi, szz += dz * dz, szp += dz * phi, ++n;
+    }
+    const double den = n * szz - sz * sz;
+    if (n < 3 || den < 1e-9) return false;
+    g.z0 = h.z0;
+    g.omega = (n * szp - sz * sp) / den;
+    g.phi0 = (sp - g.omega * sz) / n;
+    h = g;
+    return true;
+}
+
+/// A first helix fitted to a mix of nosings and back edges (9 deg tolerance, steps of 15-25 deg)
+/// lies between the two and reads too small a step angle, turning some nosings back a step as if
+/// they were back edges. Refit on both (each at its own height), give every radial line to the
+/// nearer of the two helices, and repeat: the fit settles on the nosings.
+std::vector<Radial> settleOnNosings(const SpiralLines& sl, Helix& h, std::vector<Radial> in,
+                                    const SpiralSearchParams& p) {
+    constexpr int kIterations = 3;
+    constexpr double kMaxShareOfStep = 0.45;  ///< [-] of the step angle: no line near both helices
+    for (int it = 0; it < kIterations; ++it) {
+        double rise = 0.0;
+        if (indexLevels(levelsOf(in, p.height_tolerance_m), p, rise).empty()) break;
+        Helix g = h;
+        if (!refitOnNosingsAndBackEdges(sl, in, rise, p, g)) break;
+        const double step = g.omega * rise;
+        const double tol = std::min(p.angle_tolerance_deg * kDeg, kMaxShareOfStep * std::abs(step));
+        std::vector<Radial> next;
+        Radial r;
+        for (int k = 0; k < static_cast<int>(sl.size()); ++k) {
+            if (!asRadial(sl, k, g.axis, p, r)) continue;
+            const double on = wrapAngle(r.phi - (g.phi0 + g.omega * (r.z - g.z0)));
+            const double ahead = wrapAngle(on - step);
+            if (std::abs(on) <= std::abs(ahead) && std::abs(on) <= tol) r.rot = 0.0;
+            else if (std::abs(ahead) <= tol) r.rot = -step;
+            else continue;
+            r.phi += r.rot;
+            next.push_back(r);
+        }
+        if (next.size() < 3) break;
+        h = g;
+        in = std::move(next);
+    }
+    return in;
+}
+
 /// The spiral of one axis candidate, if its levels make a stair (empty edges otherwise).
 SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vector<Radial>& in,
                          const SpiralSearchParams& p) {
@@ -279,6 +342,7 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
     in = collectInliers(sl, h, 0.0, p);
     if (in.size() < 3 || !refitHelix(sl, in, h)) return {};
     in = withBackEdges(sl, h, collectInliers(sl, h, 0.0, p), p);
+    if (!in.empty()) in = settleOnNosings(sl, h, std::move(in), p);
     in.erase(std::remove_if(in.begin(), in.end(), [&](const Radial& r) { return used[r.index]; }),
              in.end());
     return buildFlight(sl, h, in, p);
@@ -299,8 +363,13 @@ SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
             SpiralFlight f = spiralOfPair(sl, i, j, used, p, in);
             if (f.edges.empty()) continue;
             for (const Radial& r : in) explored[r.index] = 1;  // their other pairs: the same axis
-            if (f.edges.size() > best.edges.size() ||
-                (f.edges.size() == best.edges.size() && f.seen_levels > best.seen_levels)) {
+            // More levels, then more seen ones, then more lines on the helices: a helix through
+            // nosings below and back edges above (its step angle too large) can index as many
+            // levels as the true one but holds fewer lines (dev r0245: 12 against 13).
+            const auto rank = [](const SpiralFlight& s, std::size_t lines) {
+                return std::make_tuple(s.edges.size(), s.seen_levels, lines);
+            };
+            if (rank(f, in.size()) > rank(best, inliers.size())) {
                 best = std::move(f);
                 inliers.clear();
                 for (const Radial& r : in) inliers.push_back(r.index);

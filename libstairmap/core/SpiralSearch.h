@@ -14,9 +14,11 @@
 // Per pair of lines one to two rises apart and not parallel: their lines' intersection is an axis
 // candidate when it lies near the inner end of both; the lines through it (radial, not straddling
 // it) whose angle around it matches the pair's helix are its inliers. The axis is refitted to
-// them, their levels must lie on one rise (a missing level or two is put back), the step angle
-// and the run at mid radius must be a stair's. The candidate with the most levels wins; its lines
-// are removed and the search repeats.
+// them, nosings and back edges are told apart by refitting the helix to both (each at its own
+// height) until every line sits on the nearer one, their levels must lie on one rise (a missing
+// level or two is put back), the step angle and the run at mid radius must be a stair's. The
+// candidate with the most levels (then seen levels, then lines) wins; its lines are removed and the
+// search repeats.
 
 #include <vector>
 

@@ -101,6 +101,34 @@ TEST(SpiralSearch, TurnsBackEdgesOntoTheirNosings) {
     for (int k = 1; k <= 7; ++k) EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
 }
 
+TEST(SpiralSearch, SettlesOnTheNosingsWhenBothAreSeenAtSomeLevels) {
+    // A gently turning spiral (21 deg per step): the lowest level seen by its back edge only, two
+    // by their nosings, the top two by both. A first helix through all of them (9 deg tolerance)
+    // lies between nosings and back edges and turns the top nosings back a step.
+    Helix h;
+    h.step = -21.0 * kDeg;
+    h.rise = 0.17;
+    h.inner = 0.22;
+    h.outer = 1.55;
+    h.phi0 = 10.0 * kDeg;
+    std::vector<LineSegment> front, back;
+    front.push_back(radialLine(h, h.angleOf(2), h.zOf(1)));
+    for (int k : {4, 5}) {
+        front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+        back.push_back(radialLine(h, h.angleOf(k), h.zOf(k) - 0.002));
+    }
+    for (int k : {7, 8}) {
+        front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+        back.push_back(radialLine(h, h.angleOf(k + 1), h.zOf(k) - 0.015));
+    }
+    const auto spirals = findSpirals(front, back, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 8u);
+    EXPECT_NEAR(f.step_angle_rad, std::abs(h.step), 1.5 * kDeg);
+    for (int k = 1; k <= 8; ++k) EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.05) << k;
+}
+
 TEST(SpiralSearch, NoSpiralInStraightFlightsOrUnorderedRadialLines) {
     const Helix h;
     const SpiralSearchParams p = paramsFor(h);
