@@ -109,6 +109,29 @@ void absorb(Staircase& keep, const Staircase& drop, const OverlappingFlightParam
     estimateGeometry(keep);
 }
 
+/// Rule 3: keeps `keep`, its edges at the levels `half` also has lengthened along themselves over
+/// the other half's edge (never shortened); the rest of `half` is suppressed.
+void widenOver(Staircase& keep, const Staircase& half, const OverlappingFlightParams& p) {
+    for (const StairEdge& e : half.steps) {
+        const int k = levelOf(keep, e.centre().z(), p.min_height_tolerance_m);
+        if (k < 0) continue;
+        StairEdge& mine = keep.steps[static_cast<std::size_t>(k)];
+        const Eigen::Vector3d c = mine.centre();
+        Eigen::Vector3d u = mine.end - mine.start;
+        u.z() = 0.0;
+        if (u.norm() < 1e-9) continue;
+        u.normalize();
+        double lo = u.dot(mine.start - c), hi = u.dot(mine.end - c);
+        for (const Eigen::Vector3d& q : {e.start, e.end}) {
+            lo = std::min(lo, u.dot(q - c));
+            hi = std::max(hi, u.dot(q - c));
+        }
+        mine.start = c + lo * u;
+        mine.end = c + hi * u;
+    }
+    estimateGeometry(keep);
+}
+
 double totalLength(const Staircase& s) {
     double sum = 0.0;
     for (const StairEdge& e : s.steps) sum += e.length();
@@ -131,6 +154,9 @@ bool mergeOnePair(std::vector<Staircase>& found, const OverlappingFlightParams& 
             } else if (isSecondView(found[i], found[j], p)) {
                 if (!stronger(found[i], found[j])) std::swap(found[i], found[j]);
                 absorb(found[i], found[j], p);
+            } else if (sideBySideHalves(found[i], found[j], p)) {
+                if (!stronger(found[i], found[j])) std::swap(found[i], found[j]);
+                widenOver(found[i], found[j], p);
             } else {
                 continue;
             }
@@ -152,6 +178,37 @@ int edgesOnTreads(const Staircase& a, const Staircase& b, const OverlappingFligh
         if (k >= 0 && onTread(a, static_cast<std::size_t>(k), e, p)) ++on;
     }
     return on;
+}
+
+bool sideBySideHalves(const Staircase& a, const Staircase& b, const OverlappingFlightParams& p) {
+    if (a.direction != b.direction || a.steps.empty() || b.steps.empty()) return false;
+    const Eigen::Vector2d ha(std::cos(a.heading_rad), std::sin(a.heading_rad));
+    const Eigen::Vector2d hb(std::cos(b.heading_rad), std::sin(b.heading_rad));
+    if (ha.dot(hb) < std::cos(p.side_max_heading_diff_deg * M_PI / 180.0)) return false;
+    const Eigen::Vector2d n = (ha + hb).normalized(), u(-n.y(), n.x());
+    // The flights' lateral extents must meet or leave a gap narrower than the limit.
+    auto extent = [&](const Staircase& s) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (const StairEdge& e : s.steps)
+            for (const Eigen::Vector3d& q : {e.start, e.end}) {
+                lo = std::min(lo, u.dot(q.head<2>()));
+                hi = std::max(hi, u.dot(q.head<2>()));
+            }
+        return std::make_pair(lo, hi);
+    };
+    const auto [alo, ahi] = extent(a);
+    const auto [blo, bhi] = extent(b);
+    if (std::max(blo - ahi, alo - bhi) > p.side_max_lateral_gap_m) return false;
+    const double along_tol = std::max(p.side_along_tolerance_m, 0.15 * std::min(a.step_depth, b.step_depth));
+    int shared = 0;
+    for (const StairEdge& e : b.steps) {
+        const int k = levelOf(a, e.centre().z(), p.min_height_tolerance_m);
+        if (k < 0) continue;
+        const Eigen::Vector3d d = e.centre() - a.steps[static_cast<std::size_t>(k)].centre();
+        if (std::abs(n.dot(d.head<2>())) > along_tol) return false;  // every shared level agrees
+        ++shared;
+    }
+    return shared >= p.side_min_shared_levels;
 }
 
 int mergeOverlappingFlights(std::vector<Staircase>& found, const OverlappingFlightParams& params) {

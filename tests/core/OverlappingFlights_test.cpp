@@ -76,6 +76,32 @@ TEST(OverlappingFlights, SplitHalvesFarApartAreMerged) {
     EXPECT_NEAR(found[0].steps[1].length(), 2.4, 0.01);
 }
 
+TEST(OverlappingFlights, SparseHalvesSideBySideAreOneFlight) {
+    // A far view: each half's short edges scatter by +-7 deg (14 deg between the halves at a
+    // level, beyond Definition 2's 10 deg) and by 1.5 cm along the flight; 0.3 m between them.
+    std::vector<StairEdge> left, right;
+    for (int k = 0; k <= 4; ++k) {
+        const double skew = (k % 2 ? 7.0 : -7.0), dx = (k % 2 ? 0.015 : -0.015);
+        left.push_back(edge(k, 0.15, 0.7, skew, dx));
+        right.push_back(edge(k, -0.7, -0.15, -skew, -dx));
+    }
+    right.pop_back();  // the right half is seen to step 3 only
+    std::vector<Staircase> found = {stairs(right), stairs(left)};
+    EXPECT_TRUE(sideBySideHalves(found[0], found[1], {}));
+    EXPECT_EQ(mergeOverlappingFlights(found), 1);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].steps.size(), 5u);
+    EXPECT_NEAR(found[0].steps[1].length(), 1.4, 0.1);  // over both halves
+    // Half a run apart along the flight (another flight beside it, offset): apart.
+    std::vector<StairEdge> shifted;
+    for (int k = 0; k <= 4; ++k) shifted.push_back(edge(k, -0.7, -0.15, 0.0, 0.5 * kRun));
+    EXPECT_FALSE(sideBySideHalves(stairs(left), stairs(shifted), {}));
+    // Beside it beyond the lateral gap limit (1 m between them): apart.
+    std::vector<StairEdge> far_side;
+    for (int k = 0; k <= 4; ++k) far_side.push_back(edge(k, -1.55, -0.85));
+    EXPECT_FALSE(sideBySideHalves(stairs(left), stairs(far_side), {}));
+}
+
 TEST(OverlappingFlights, DifferentFlightsStayApart) {
     // beside it (0.5 m apart, 0.1 m higher: not collinear), beyond a landing, and descending
     std::vector<Staircase> found = {whole(0, 5), whole(0, 5, 1.9), whole(9, 13)};
