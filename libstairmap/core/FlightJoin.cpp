@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "core/StaircaseGeometry.h"
 
@@ -20,7 +22,17 @@ std::pair<double, double> flightExtent(const Staircase& s, const Eigen::Vector2d
     return ext;
 }
 
-/// True when `far` starts beyond `near`'s last edge as a continuation of the same flight.
+/// Does `far`'s first edge lie on `near`'s last level (the same nosing, seen by a second line:
+/// within half a run along the heading and the height tolerance)?
+bool startsOnLastLevel(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
+    const Eigen::Vector2d h(std::cos(near.heading_rad), std::sin(near.heading_rad));
+    const Eigen::Vector3d d = far.steps.front().centre() - near.steps.back().centre();
+    return std::abs(h.dot(d.head<2>())) <= 0.5 * near.step_depth &&
+           std::abs(d.z()) <= p.height_tolerance_m;
+}
+
+/// True when `far` starts beyond `near`'s last edge (or on its level) as a continuation of the
+/// same flight.
 bool continues(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
     if (near.direction != far.direction || near.steps.empty() || far.steps.empty()) return false;
     const double turn = std::abs(std::remainder(far.heading_rad - near.heading_rad, 2 * M_PI));
@@ -29,7 +41,8 @@ bool continues(const Staircase& near, const Staircase& far, const FlightJoinPara
     const StairEdge& last = near.steps.back();
     const StairEdge& first = far.steps.front();
     const double gap = h.dot((first.centre() - last.centre()).head<2>());
-    if (gap <= 0.0 || gap > p.max_gap_runs * near.step_depth) return false;
+    const bool shared = far.steps.size() > 1 && startsOnLastLevel(near, far, p);
+    if (!shared && (gap <= 0.0 || gap > p.max_gap_runs * near.step_depth)) return false;
     const double up = near.direction == StairDirection::Ascending ? 1.0 : -1.0;
     const double climb = up * (first.centre().z() - last.centre().z());
     if (climb < -p.height_tolerance_m ||
@@ -58,6 +71,50 @@ bool onNosingLine(const Staircase& near, const Staircase& far, const FlightJoinP
     return true;
 }
 
+/// Largest residual of a least-squares line through (k, v[k]), and its slope.
+std::pair<double, double> lineFitResidual(const std::vector<double>& v) {
+    const double n = static_cast<double>(v.size());
+    double sk = 0, sv = 0, skk = 0, skv = 0;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        const double x = static_cast<double>(k);
+        sk += x, sv += v[k], skk += x * x, skv += x * v[k];
+    }
+    const double slope = (n * skv - sk * sv) / (n * skk - sk * sk);
+    const double offset = (sv - slope * sk) / n;
+    double worst = 0.0;
+    for (std::size_t k = 0; k < v.size(); ++k)
+        worst = std::max(worst, std::abs(v[k] - offset - slope * static_cast<double>(k)));
+    return {worst, slope};
+}
+
+/// Is `s` one flight: every nosing on one rise (within the height tolerance) and on one run
+/// along the heading (within half a run)?
+bool onOneRiseAndRun(const Staircase& s, const FlightJoinParams& p) {
+    if (s.steps.size() < 3) return true;
+    const Eigen::Vector2d h(std::cos(s.heading_rad), std::sin(s.heading_rad));
+    std::vector<double> z, along;
+    for (const StairEdge& e : s.steps) {
+        z.push_back(e.centre().z());
+        along.push_back(h.dot(e.centre().head<2>()));
+    }
+    const double z_worst = lineFitResidual(z).first;
+    const auto [along_worst, run] = lineFitResidual(along);
+    return z_worst <= p.height_tolerance_m && along_worst <= 0.5 * std::abs(run);
+}
+
+/// `far` starts on `near`'s last level: one flight read as two chains that meet there (a line
+/// broken by debris ends one chain, the search starts another at the same nosing). Joined, the
+/// level keeping the longer chain's edge, when the whole lies on one rise and run; otherwise the
+/// longer chain alone is kept (the shorter one's rise disagrees: a corrupted view).
+void joinAtSharedLevel(Staircase& near, const Staircase& far, const FlightJoinParams& p) {
+    Staircase joined = near;
+    if (far.steps.size() > near.steps.size()) joined.steps.back() = far.steps.front();
+    joined.steps.insert(joined.steps.end(), far.steps.begin() + 1, far.steps.end());
+    estimateGeometry(joined);
+    if (onOneRiseAndRun(joined, p)) near = std::move(joined);
+    else if (far.steps.size() > near.steps.size()) near = far;
+}
+
 }  // namespace
 
 int joinContinuedFlights(std::vector<Staircase>& found, const FlightJoinParams& params) {
@@ -65,7 +122,9 @@ int joinContinuedFlights(std::vector<Staircase>& found, const FlightJoinParams& 
     for (std::size_t i = 0; i < found.size(); ++i) {
         for (std::size_t j = 0; j < found.size(); ++j) {
             if (i == j || !continues(found[i], found[j], params)) continue;
-            if (onNosingLine(found[i], found[j], params)) {
+            if (startsOnLastLevel(found[i], found[j], params)) {
+                joinAtSharedLevel(found[i], found[j], params);
+            } else if (onNosingLine(found[i], found[j], params)) {
                 found[i].steps.insert(found[i].steps.end(), found[j].steps.begin(),
                                       found[j].steps.end());
                 estimateGeometry(found[i]);

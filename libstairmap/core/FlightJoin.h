@@ -5,7 +5,10 @@
 // edge, along its heading and over the same width. Then either the second's edges lie on the
 // first's nosing line (consecutive steps within the height tolerance) and they are appended, or
 // they do not and the second is dropped as a corrupted view of the flight's far part: the first
-// chain starts one rise from the robot's floor, so it is the anchored one.
+// chain starts one rise from the robot's floor, so it is the anchored one. The second may also
+// start on the first's last level (the same nosing read by a second line, debris having ended the
+// first chain there): joined when all their edges lie on one rise and run, the shared level keeping
+// the longer chain's edge; otherwise the longer chain alone is kept.
 
 #include <vector>
 

@@ -58,6 +58,39 @@ TEST(FlightJoin, AContinuationWhoseFacingEdgeIsAPieceIsStillRecognised) {
     EXPECT_EQ(found[0].steps.size(), 4u);
 }
 
+TEST(FlightJoin, ChainsMeetingAtALevelAreOneFlight) {
+    // A nosing broken by debris ends the first chain at step 3; the search starts another on a
+    // second line of that nosing (2 cm lower, beside the first), up to step 10.
+    Staircase far = flight(3, 10);
+    far.steps.front().start += Eigen::Vector3d(0.0, -0.7, -0.02);
+    far.steps.front().end += Eigen::Vector3d(0.0, -0.7, -0.02);
+    estimateGeometry(far);
+    std::vector<Staircase> found = {flight(0, 3), far};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].steps.size(), 11u);
+    EXPECT_NEAR(found[0].steps.front().centre().z(), -0.33, 1e-9);
+    EXPECT_NEAR(found[0].step_height, kRise, 0.005);
+    EXPECT_NEAR(found[0].step_depth, kRun, 0.005);
+}
+
+TEST(FlightJoin, OfChainsMeetingAtALevelOnDifferentRisesTheLongerIsKept) {
+    // The near chain's rise is 3.5 cm too large (lines on debris below its top edge): the joined
+    // edges do not lie on one rise, and the longer far chain is the better view.
+    Staircase near = flight(0, 3);
+    for (std::size_t k = 0; k < near.steps.size(); ++k) {
+        const double dz = -0.035 * static_cast<double>(3 - k);
+        near.steps[k].start.z() += dz;
+        near.steps[k].end.z() += dz;
+    }
+    estimateGeometry(near);
+    std::vector<Staircase> found = {near, flight(3, 10)};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].steps.size(), 8u);
+    EXPECT_NEAR(found[0].steps.front().centre().z(), -0.33 + 3 * kRise, 1e-9);
+}
+
 TEST(FlightJoin, SeparateFlightsStaySeparate) {
     // side by side (no lateral overlap), beyond a 1.5 m landing, and one descending
     std::vector<Staircase> found = {flight(0, 4), flight(0, 4, 2.0), flight(5, 8, 0.0, 3.0)};
