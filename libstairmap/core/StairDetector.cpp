@@ -14,6 +14,7 @@
 #include "core/RowSegmentation.h"
 #include "core/StairPairExplain.h"
 #include "core/SpiralSearch.h"
+#include "core/TurningFlight.h"
 #include "core/StairSearch.h"
 #include "core/StepExtent.h"
 #include "core/StaircaseGeometry.h"
@@ -227,8 +228,10 @@ void addSpiralFlights(const std::vector<LineSegment>& front_drops,
         for (const Staircase& s : out) longer_chain |= onSpiral(s) && s.steps.size() > f.edges.size();
         if (longer_chain) continue;
         out.erase(std::remove_if(out.begin(), out.end(), onSpiral), out.end());
+        // The run at mid radius from the found lines: StepExtent's tread windows use it, and it
+        // is measured again from the measured edges (TurningFlight).
         out.push_back(makeStaircase(f.edges, StairDirection::Ascending, 0.5 * p.leaf_size_m));
-        out.back().step_depth = f.run_m;  // at mid radius, not where the edges were seen
+        out.back().step_depth = f.run_m;
         out.back().slope_rad = std::atan2(out.back().step_height, f.run_m);
     }
 }
@@ -275,10 +278,16 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
     jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);
     joinContinuedFlights(result.staircases, jp);
-    // After the merges: a spiral's run is its chord at mid radius, which they would re-estimate.
+    // After the merges, which compare the edges of straight flights.
     if (params_.detect_ascending)
         addSpiralFlights(front_drops, back_drops, floor, params_, result.staircases);
-    for (Staircase& s : result.staircases) measureStepExtents(cloud_robot, s);  // widths, sides
+    for (Staircase& s : result.staircases) {
+        measureStepExtents(cloud_robot, s);  // widths, sides
+        if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius
+            s.step_depth = turning->run_m;
+            s.slope_rad = std::atan2(s.step_height, s.step_depth);
+        }
+    }
     if (debug) debug->accepted = result.staircases;
     return result;
 }

@@ -1,0 +1,72 @@
+// core/TurningFlight: a spiral's axis, step angle and run at mid radius from its edges, built from
+// a known helix (truth from the construction); straight flights have none.
+#include "core/TurningFlight.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace stairmap {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct Spiral {
+    Eigen::Vector2d axis{-2.0, 3.0};
+    double inner = 0.15, outer = 1.25;  ///< [m] column and outer radius
+    double step = 31.0 * kDeg;          ///< [rad] turn per step (signed: clockwise < 0)
+    double rise = 0.18;
+    double mid() const { return 0.5 * (inner + outer); }
+    double run() const { return 2.0 * mid() * std::sin(0.5 * std::abs(step)); }
+};
+
+/// Nosing k: radial from `from` to `to` [m] around the axis at angle 40 deg + k step.
+StairEdge nosing(const Spiral& s, int k, double from, double to) {
+    const double a = 40.0 * kDeg + k * s.step;
+    const Eigen::Vector2d u(std::cos(a), std::sin(a));
+    StairEdge e;
+    e.start << s.axis + from * u, k * s.rise;
+    e.end << s.axis + to * u, k * s.rise;
+    e.num_points = 20;
+    return e;
+}
+
+TEST(TurningFlight, RunAtMidRadiusOfASpiralSeenPartly) {
+    for (double step : {31.0 * kDeg, -24.0 * kDeg, 45.0 * kDeg}) {
+        Spiral sp;
+        sp.step = step;
+        Staircase s;
+        for (int k = 0; k < 8; ++k) {
+            // Every third nosing seen only near the column (its outer part hidden), one put back.
+            const double to = k % 3 == 2 ? 0.7 : sp.outer;
+            s.steps.push_back(nosing(sp, k, sp.inner, to));
+            if (k == 4) s.steps.back().num_points = 0;
+        }
+        const auto t = turningFlight(s);
+        ASSERT_TRUE(t.has_value()) << step;
+        EXPECT_LT((t->axis - sp.axis).norm(), 0.01);
+        EXPECT_NEAR(t->step_angle_rad, std::abs(step), 0.2 * kDeg);
+        EXPECT_NEAR(t->inner_radius_m, sp.inner, 0.01);
+        EXPECT_NEAR(t->outer_radius_m, sp.outer, 0.01);
+        EXPECT_NEAR(t->run_m, sp.run(), 0.005) << step;
+    }
+}
+
+TEST(TurningFlight, StraightFlightsAndNoisyEdgesHaveNone) {
+    Staircase straight;
+    for (int k = 0; k < 6; ++k) {
+        StairEdge e;
+        const double skew = (k % 2 ? 4.0 : -4.0) * kDeg;  // edge directions scattered by +-4 deg
+        e.start = {1.5 + 0.3 * k - 0.6 * std::sin(skew), 0.6 * std::cos(skew), 0.17 * k};
+        e.end = {1.5 + 0.3 * k + 0.6 * std::sin(skew), -0.6 * std::cos(skew), 0.17 * k};
+        e.num_points = 20;
+        straight.steps.push_back(e);
+    }
+    EXPECT_FALSE(turningFlight(straight).has_value());
+    Staircase two;
+    two.steps.assign(straight.steps.begin(), straight.steps.begin() + 2);
+    EXPECT_FALSE(turningFlight(two).has_value());
+}
+
+}  // namespace
+}  // namespace stairmap
