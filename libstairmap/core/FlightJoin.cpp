@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -11,20 +10,10 @@
 namespace stairmap {
 namespace {
 
-/// Union of the lateral extents of a flight's edges [m].
-std::pair<double, double> flightExtent(const Staircase& s, const Eigen::Vector2d& lateral) {
-    std::pair<double, double> ext{std::numeric_limits<double>::infinity(),
-                                  -std::numeric_limits<double>::infinity()};
-    for (const StairEdge& e : s.steps) {
-        const auto x = lateralExtent(e, lateral);
-        ext = {std::min(ext.first, x.first), std::max(ext.second, x.second)};
-    }
-    return ext;
-}
-
-/// Does `far`'s first edge lie on `near`'s last level (the same nosing, seen by a second line:
-/// within half a run along the heading and the height tolerance)?
+/// Does `far` (two edges or more) start on `near`'s last level (the same nosing, seen by a second
+/// line: within half a run along the heading and the height tolerance)?
 bool startsOnLastLevel(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
+    if (far.steps.size() < 2) return false;
     const Eigen::Vector2d h(std::cos(near.heading_rad), std::sin(near.heading_rad));
     const Eigen::Vector3d d = far.steps.front().centre() - near.steps.back().centre();
     return std::abs(h.dot(d.head<2>())) <= 0.5 * near.step_depth &&
@@ -41,7 +30,7 @@ bool continues(const Staircase& near, const Staircase& far, const FlightJoinPara
     const StairEdge& last = near.steps.back();
     const StairEdge& first = far.steps.front();
     const double gap = h.dot((first.centre() - last.centre()).head<2>());
-    const bool shared = far.steps.size() > 1 && startsOnLastLevel(near, far, p);
+    const bool shared = startsOnLastLevel(near, far, p);
     if (!shared && (gap <= 0.0 || gap > p.max_gap_runs * near.step_depth)) return false;
     const double up = near.direction == StairDirection::Ascending ? 1.0 : -1.0;
     const double climb = up * (first.centre().z() - last.centre().z());
@@ -50,7 +39,7 @@ bool continues(const Staircase& near, const Staircase& far, const FlightJoinPara
         return false;
     // Over the same width: the flights' whole lateral extents, as a facing edge may be a piece.
     const Eigen::Vector2d lateral(-h.y(), h.x());
-    const auto a = flightExtent(near, lateral), b = flightExtent(far, lateral);
+    const auto a = lateralExtent(near, lateral), b = lateralExtent(far, lateral);
     const double common = std::min(a.second, b.second) - std::max(a.first, b.first);
     return common >= p.min_lateral_overlap * std::min(a.second - a.first, b.second - b.first);
 }
@@ -71,19 +60,16 @@ bool onNosingLine(const Staircase& near, const Staircase& far, const FlightJoinP
     return true;
 }
 
-/// Largest residual of a least-squares line through (k, v[k]), and its slope.
+/// Largest residual of the least-squares line through (k, v[k]), and its slope.
 std::pair<double, double> lineFitResidual(const std::vector<double>& v) {
-    const double n = static_cast<double>(v.size());
-    double sk = 0, sv = 0, skk = 0, skv = 0;
-    for (std::size_t k = 0; k < v.size(); ++k) {
-        const double x = static_cast<double>(k);
-        sk += x, sv += v[k], skk += x * x, skv += x * v[k];
-    }
-    const double slope = (n * skv - sk * sv) / (n * skk - sk * sk);
-    const double offset = (sv - slope * sk) / n;
+    const double slope = slopeAgainstIndex(v);
+    double mean_v = 0.0;
+    for (double x : v) mean_v += x;
+    mean_v /= static_cast<double>(v.size());
+    const double mean_k = 0.5 * static_cast<double>(v.size() - 1);
     double worst = 0.0;
     for (std::size_t k = 0; k < v.size(); ++k)
-        worst = std::max(worst, std::abs(v[k] - offset - slope * static_cast<double>(k)));
+        worst = std::max(worst, std::abs(v[k] - mean_v - slope * (static_cast<double>(k) - mean_k)));
     return {worst, slope};
 }
 

@@ -187,17 +187,8 @@ bool sideBySideHalves(const Staircase& a, const Staircase& b, const OverlappingF
     if (ha.dot(hb) < std::cos(p.side_max_heading_diff_deg * M_PI / 180.0)) return false;
     const Eigen::Vector2d n = (ha + hb).normalized(), u(-n.y(), n.x());
     // The flights' lateral extents must meet or leave a gap narrower than the limit.
-    auto extent = [&](const Staircase& s) {
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (const StairEdge& e : s.steps)
-            for (const Eigen::Vector3d& q : {e.start, e.end}) {
-                lo = std::min(lo, u.dot(q.head<2>()));
-                hi = std::max(hi, u.dot(q.head<2>()));
-            }
-        return std::make_pair(lo, hi);
-    };
-    const auto [alo, ahi] = extent(a);
-    const auto [blo, bhi] = extent(b);
+    const auto [alo, ahi] = lateralExtent(a, u);
+    const auto [blo, bhi] = lateralExtent(b, u);
     if (std::max(blo - ahi, alo - bhi) > p.side_max_lateral_gap_m) return false;
     const double along_tol = std::max(p.side_along_tolerance_m, 0.15 * std::min(a.step_depth, b.step_depth));
     int shared = 0;

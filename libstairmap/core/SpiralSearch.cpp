@@ -218,9 +218,7 @@ std::vector<Radial> withBackEdges(const SpiralLines& sl, const Helix& h, std::ve
 bool refitOnNosingsAndBackEdges(const SpiralLines& sl, const std::vector<Radial>& in, double rise,
                                 const SpiralSearchParams& p, Helix& h) {
     Helix g = h;
-    std::vector<Radial> axis_lines = in;
-    for (Radial& r : axis_lines) r.rot = 0.0;
-    if (!refitHelix(sl, axis_lines, g)) return false;  // the axis (omega refitted below)
+    if (!refitHelix(sl, in, g)) return false;  // the axis (omega and phi0 refitted below)
     double sz = 0, sp = 0, szz = 0, szp = 0;
     int n = 0;
     Radial about;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace stairmap {
@@ -14,22 +15,6 @@ double pointToLineXY(const Eigen::Vector2d& p, const StairEdge& e) {
     const double len = d.norm();
     if (len < 1e-12) return (p - a).norm();
     return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / len;
-}
-
-/// Least-squares slope of values[i] against i.
-double slopeAgainstIndex(const std::vector<double>& values) {
-    const int k = static_cast<int>(values.size());
-    if (k < 2) return 0.0;
-    const double i_mean = 0.5 * (k - 1);
-    double v_mean = 0.0;
-    for (double v : values) v_mean += v;
-    v_mean /= k;
-    double num = 0.0, den = 0.0;
-    for (int i = 0; i < k; ++i) {
-        num += (i - i_mean) * (values[i] - v_mean);
-        den += (i - i_mean) * (i - i_mean);
-    }
-    return num / den;
 }
 
 /// Length-weighted mean orientation of the edges (orientations are axial: average 2*alpha).
@@ -98,6 +83,31 @@ void completePartialEdges(std::vector<StairEdge>& steps, double alpha, double wi
 }
 
 }  // namespace
+
+double slopeAgainstIndex(const std::vector<double>& values) {
+    const int k = static_cast<int>(values.size());
+    if (k < 2) return 0.0;
+    const double i_mean = 0.5 * (k - 1);
+    double v_mean = 0.0;
+    for (double v : values) v_mean += v;
+    v_mean /= k;
+    double num = 0.0, den = 0.0;
+    for (int i = 0; i < k; ++i) {
+        num += (i - i_mean) * (values[i] - v_mean);
+        den += (i - i_mean) * (i - i_mean);
+    }
+    return num / den;
+}
+
+std::pair<double, double> lateralExtent(const Staircase& s, const Eigen::Vector2d& lateral) {
+    std::pair<double, double> ext{std::numeric_limits<double>::infinity(),
+                                  -std::numeric_limits<double>::infinity()};
+    for (const StairEdge& e : s.steps) {
+        const auto x = lateralExtent(e, lateral);
+        ext = {std::min(ext.first, x.first), std::max(ext.second, x.second)};
+    }
+    return ext;
+}
 
 std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral) {
     const double a = lateral.dot(e.start.head<2>()), b = lateral.dot(e.end.head<2>());

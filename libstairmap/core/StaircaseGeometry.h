@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <utility>
+#include <vector>
 
 #include "core/Staircase.h"
 
@@ -29,6 +30,12 @@ double edgeSpacingXY(const StairEdge& a, const StairEdge& b);
 
 /// Extent [lo, hi] of an edge's XY end points projected on the unit direction `lateral` [m].
 std::pair<double, double> lateralExtent(const StairEdge& e, const Eigen::Vector2d& lateral);
+
+/// Union of the lateral extents of a flight's edges [m] (empty flight: [+inf, -inf]).
+std::pair<double, double> lateralExtent(const Staircase& s, const Eigen::Vector2d& lateral);
+
+/// Least-squares slope of values[i] against the index i (0 for fewer than two values).
+double slopeAgainstIndex(const std::vector<double>& values);
 
 /// Height [m] (frame of the staircase) of the surface the flight starts from, as the robot meets
 /// it: ascending, the surface one rise under the first nosing (the floor, or a landing or platform

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/StaircaseGeometry.h"
+
 namespace stairmap {
 namespace {
 
@@ -50,13 +52,7 @@ std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlig
         }
     }
     if (2 * radial <= static_cast<int>(n) || inner.empty()) return std::nullopt;
-    double sk = 0, sp = 0, skk = 0, skp = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-        const double x = static_cast<double>(k);
-        sk += x, sp += phi[k], skk += x * x, skp += x * phi[k];
-    }
-    const double dn = static_cast<double>(n);
-    t.step_angle_rad = std::abs((dn * skp - sk * sp) / (dn * skk - sk * sk));
+    t.step_angle_rad = std::abs(slopeAgainstIndex(phi));
     if (t.step_angle_rad < p.min_step_angle_deg * M_PI / 180.0) return std::nullopt;
     t.inner_radius_m = quantile(inner, 0.5);
     t.outer_radius_m = quantile(outer, 0.5);
