@@ -11,15 +11,19 @@ namespace {
 
 constexpr double kMinSpreadS = 0.02;  ///< [m] points of a bin spread less along s: no slope
 constexpr double kMaxTreadSlope = 0.25;  ///< [-] dz/ds; stairs' stringers slope 0.36-1 (20-45 deg)
+/// Bin bits: tread points in the tread window, points above / below it there; points on the
+/// nosing line at the tread's height, points above the nosing line.
+constexpr std::uint8_t kTread = 1, kAbove = 2, kBelow = 4, kOnNosing = 8, kAboveNosing = 16;
 
 /// One step's tread in its own frame: c = edge centre, u = along the edge (left -> right), n =
 /// outward. Lateral bins from t0 record tread points and points above / below the tread.
 struct TreadScan {
     Eigen::Vector2d c, u, n;
     double z = 0.0, s_lo = 0.0, s_hi = 0.0, t0 = 0.0;
+    double nosing_band = 0.0;  ///< [m] |s| up to this is on the nosing line
     std::size_t step = 0;          ///< index in the staircase
     int edge_lo = 0, edge_hi = 0;  ///< bins covered by the found edge
-    std::vector<std::uint8_t> bins;  ///< bit 1: tread, 2: above it, 4: below it
+    std::vector<std::uint8_t> bins;  ///< kTread | kAbove | kBelow | kOnNosing | kAboveNosing
     /// per bin, points near the tread's height (within side_dz): their count and the sums that
     /// give the slope of height against s. A tread is flat; a sloped surface beside it (a
     /// stringer's top) crosses the tread's height within the run and is no tread.
@@ -28,6 +32,14 @@ struct TreadScan {
         double n = 0, s = 0, ss = 0, z = 0, sz = 0;
     };
     std::vector<Near> near;
+    /// The nosing line is hit here at the tread's height, nothing rises above it (a wall or a
+    /// column beside the flight would) and the tread window holds no point at all: the step
+    /// seen along its nosing only. (A stringer beside the flight puts points in the window.)
+    bool onBareNosing(int b) const {
+        const std::uint8_t any = kOnNosing | kAboveNosing | kTread | kAbove | kBelow;
+        return (bins[b] & any) == kOnNosing && near[b].n == 0;
+    }
+    bool isStep(int b) const { return isTread(b) || onBareNosing(b); }
     bool isTread(int b) const {
         const Near& q = near[b];
         if (q.on == 0) return false;
@@ -38,7 +50,6 @@ struct TreadScan {
     }
 };
 
-constexpr std::uint8_t kTread = 1, kAbove = 2, kBelow = 4;
 constexpr double kMaxAbove = 2.0;  ///< [m] higher points are ceilings, not walls
 
 TreadScan scanOf(const Staircase& s, std::size_t k, const StepExtentParams& p) {
@@ -53,6 +64,7 @@ TreadScan scanOf(const Staircase& s, std::size_t k, const StepExtentParams& p) {
     const bool up = s.direction == StairDirection::Ascending;
     t.s_lo = up ? p.tread_from_runs * run : -p.tread_to_runs * run;
     t.s_hi = up ? p.tread_to_runs * run : -p.tread_from_runs * run;
+    t.nosing_band = p.nosing_band_runs * run;
     const double half = 0.5 * e.length(), reach = p.max_extension_m + p.side_band_m;
     t.t0 = -half - reach;
     t.bins.assign(static_cast<std::size_t>(std::ceil((2 * half + 2 * reach) / p.bin_m)) + 1, 0);
@@ -65,10 +77,15 @@ TreadScan scanOf(const Staircase& s, std::size_t k, const StepExtentParams& p) {
 void addPoint(TreadScan& t, const Eigen::Vector3f& q, const StepExtentParams& p) {
     const Eigen::Vector2d d(q.x() - t.c.x(), q.y() - t.c.y());
     const double s = t.n.dot(d);
-    if (s < t.s_lo || s > t.s_hi) return;
+    if ((s < t.s_lo || s > t.s_hi) && std::abs(s) > t.nosing_band) return;
     const int b = static_cast<int>(std::floor((t.u.dot(d) - t.t0) / p.bin_m));
     if (b < 0 || b >= static_cast<int>(t.bins.size())) return;
     const double dz = q.z() - t.z;
+    if (std::abs(s) <= t.nosing_band) {
+        if (std::abs(dz) <= p.tread_dz_m) t.bins[b] |= kOnNosing;
+        else if (dz > p.side_dz_m && dz < kMaxAbove) t.bins[b] |= kAboveNosing;
+    }
+    if (s < t.s_lo || s > t.s_hi) return;
     if (std::abs(dz) <= p.side_dz_m) {
         TreadScan::Near& acc = t.near[b];
         acc.n += 1;
@@ -86,7 +103,8 @@ void addPoint(TreadScan& t, const Eigen::Vector3f& q, const StepExtentParams& p)
 
 /// Last tread bin walking from `from` in direction `dir` (+1 / -1): across any hole up to
 /// max_gap, and across a longer one up to side_band when nothing in it rises above the tread (a
-/// sparse or shadowed tread; a wall or a box stops the walk after max_gap).
+/// sparse or shadowed tread; a wall or a box stops the walk after max_gap). A bin where the
+/// step is seen on its bare nosing only counts as tread (a far ring may hit a step only there).
 int walkTread(const TreadScan& t, int from, int dir, const StepExtentParams& p) {
     const int max_gap = static_cast<int>(p.max_gap_m / p.bin_m);
     const int long_gap = static_cast<int>(p.side_band_m / p.bin_m);
@@ -98,10 +116,10 @@ int walkTread(const TreadScan& t, int from, int dir, const StepExtentParams& p) 
         // After a hole the tread resumes only with another tread bin within the next two (not
         // at a stray point, such as where a stringer's top crosses the tread's height).
         const auto treadAt = [&](int j) {
-            return j >= 0 && j < static_cast<int>(t.bins.size()) && t.isTread(j);
+            return j >= 0 && j < static_cast<int>(t.bins.size()) && t.isStep(j);
         };
         const bool resumes = gap <= 1 || treadAt(i + dir) || treadAt(i + 2 * dir);
-        if (t.isTread(i) && resumes) {
+        if (t.isStep(i) && resumes) {
             last = i;
             gap = 0;
             above = false;
@@ -176,7 +194,7 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
         const TreadScan& t = scans.back();
         const double reach = -t.t0;
         for (double a : {-reach, reach})
-            for (double b : {t.s_lo, t.s_hi}) {
+            for (double b : {std::min(t.s_lo, -t.nosing_band), std::max(t.s_hi, t.nosing_band)}) {
                 const Eigen::Vector2d q = t.c + a * t.u + b * t.n;
                 lo = lo.cwiseMin(q);
                 hi = hi.cwiseMax(q);

@@ -3,8 +3,8 @@
 // A nosing line found in one z row is often a piece of the step (a gap in a far row, debris, the
 // end hidden by a stairwell wall's top), so the paper's width (mean edge length, Sec. III-D)
 // reads short. Here every tread is measured in the cloud itself: from the found edge, sideways
-// over the points lying on the tread (at its height, within its run) until a wall or a gap;
-// then beyond
+// over the points lying on the tread (at its height, within its run) or on its nosing line until a
+// wall or a gap; then beyond
 // each end the side is classified:
 //  - Wall:   points rising above the tread just beyond its end (a wall, a railing's posts);
 //  - Open:   no such points, but the floor or a drop (points well below the tread) seen there;
@@ -29,6 +29,12 @@ struct StepExtentParams {
     double side_band_m = 0.30;
     double max_extension_m = 2.5;    ///< [m] beyond the found edge, on each side
     double side_dz_m = 0.08;         ///< [m] rising above / dropping below the tread by this
+    /// [-] points within this many runs of the found nosing line, at the tread's height, lie on
+    /// the nosing: a far LiDAR ring often hits a step only there, the tread window stays empty
+    /// (dev2 r0276: 0.67 m read for 1.26 m). Such a bin counts as tread only when nothing rises
+    /// above the nosing line there (a wall, a column) and its tread window holds no point at all
+    /// (a stringer beside the flight puts its top there).
+    double nosing_band_runs = 0.2;
 };
 
 /// Measures every step of `stairs` (robot frame, as detected) in `cloud` as described above and

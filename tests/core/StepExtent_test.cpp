@@ -103,6 +103,50 @@ TEST(StepExtent, WithASideUnseenTheFlightIsAsWideAsItsWidestStep) {
     EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
 }
 
+/// Points along each nosing line, 2 cm in front of it at the tread's height, from y_lo to y_hi.
+void addNosingHits(PointCloud& c, double y_lo, double y_hi) {
+    for (int k = 0; k + 1 < kSteps; ++k)
+        for (double y = y_lo; y <= y_hi; y += 0.02)
+            c.emplace_back(static_cast<float>(nosingX(k) - 0.02), static_cast<float>(y),
+                           static_cast<float>(treadZ(k)));
+}
+
+TEST(StepExtent, AStepHitOnlyAlongItsNosingIsMeasuredToTheNosingsEnds) {
+    // A far LiDAR ring hits each step along its nosing; the treads' surfaces are seen only in the
+    // middle (y -0.1 .. 0.3, where the found pieces lie). Wall on the left, floor on the right.
+    PointCloud cloud;
+    addNosingHits(cloud, -kHalfWidth, kHalfWidth);
+    for (int k = 0; k + 1 < kSteps; ++k)
+        for (double x = nosingX(k) + 0.05; x < nosingX(k + 1) - 0.05; x += 0.04) {
+            for (double y = -0.1; y <= 0.3; y += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(treadZ(k)));
+            for (double z = treadZ(k); z < treadZ(k) + 1.2; z += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(kHalfWidth + 0.03), static_cast<float>(z));
+            for (double y = -kHalfWidth - 0.3; y < -kHalfWidth - 0.05; y += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(kFloor));
+        }
+    Staircase s = pieces();
+    measureStepExtents(cloud, s);
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+}
+
+TEST(StepExtent, AStringerBesideTheTreadsIsNoPartOfTheSteps) {
+    // An open-sided flight with a stringer just beyond the treads' right ends: a 5 cm wide beam
+    // whose top rises with the flight and crosses each nosing's height at the nosing.
+    PointCloud cloud = flightCloud(-kHalfWidth, false, false);
+    const double slope = kRise / kRun;
+    for (double x = nosingX(0) - 0.2; x < nosingX(kSteps - 1); x += 0.02)
+        for (double y = -kHalfWidth - 0.08; y <= -kHalfWidth - 0.03; y += 0.01)
+            cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                               static_cast<float>(treadZ(0) + slope * (x - nosingX(0))));
+    Staircase s = pieces();
+    measureStepExtents(cloud, s);
+    for (int k = 0; k + 1 < kSteps; ++k)
+        EXPECT_NEAR(s.steps[k].end.y(), -kHalfWidth, 0.03) << "step " << k;
+}
+
 TEST(StepExtent, EmptyCloudAndTinyStaircasesChangeNothing) {
     Staircase s = pieces();
     measureStepExtents({}, s);
