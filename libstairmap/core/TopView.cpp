@@ -267,6 +267,9 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p,
     grid.resize(static_cast<std::size_t>(box.nx) * box.ny);
     std::memset(grid.data(), 0, grid.size() * sizeof(Column));  // all empty
     highestPoints(cloud, p, box, code, grid.data());
+    // Read through a local pointer: the scan's push_back could alias the thread-local vector, so
+    // grid.data() would be loaded again (through the thread pointer) for every column.
+    const Column* const columns = grid.data();
     Thresholds t;
     t.min_dz = code.quanta(p.edge_min_dz_m);
     t.walk = std::clamp(static_cast<int>(std::lround(p.neighbour_walk_m / p.leaf_m)), 1, kPad);
@@ -279,17 +282,17 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p,
         // Direction from the robot, taken at the column centre (grid-aligned, no point noise).
         const float cy = box.y0 + (iy + 0.5f) * leaf;
         for (int ix = 0, col = iy * box.nx; ix < box.nx; ++ix, ++col) {
-            const Column c = grid[col];
+            const Column c = columns[col];
             if (c.bits == 0) {
                 // Most columns are empty: skip a run of four with one test.
-                if (ix + 4 < box.nx && allEmpty4(grid.data() + col + 1)) {
+                if (ix + 4 < box.nx && allEmpty4(columns + col + 1)) {
                     ix += 4;
                     col += 4;
                 }
                 continue;
             }
             const float cx = box.x0 + (ix + 0.5f) * leaf;
-            const std::uint8_t flags = classify(grid.data(), col, box.nx, cx, cy, t);
+            const std::uint8_t flags = classify(columns, col, box.nx, cx, cy, t);
             if (flags == 0) continue;
             cells.push_back({box.x0 + (ix + (c.fx() + 0.5f) / kFraction) * leaf,
                              box.y0 + (iy + (c.fy() + 0.5f) / kFraction) * leaf,
