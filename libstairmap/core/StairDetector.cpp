@@ -5,6 +5,7 @@
 
 #include "core/CylindricalRows.h"
 #include "core/FlightJoin.h"
+#include "core/FlightPoints.h"
 #include "core/FloorEstimation.h"
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
@@ -143,6 +144,27 @@ void recordDirection(const std::vector<LineSegment>& lines, const std::vector<ch
     explainRefusedPairs(lines, used, dir, floor_z, p, debug.rejected);
 }
 
+/// The points of `cloud` that raiseEdgesToTreads and then fitEdgesToRayClearance (default
+/// parameters) can take from it, and some more: a box around `edges` holding the boxes both
+/// select with pointsNearEdges, in cloud order. Either selects from it exactly what it would
+/// select from the whole cloud. Edges keep their XY, and raiseEdgesToTreads lifts each by less
+/// than a rise, so the second box is known before the first step runs.
+PointCloud pointsNearBothCorrections(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                                     double rise, double run) {
+    const TreadHeightParams tp;
+    const RayClearanceParams rp;
+    constexpr double kSlack = 0.01;  // [m] beyond both boxes: no rounding decides a point
+    double z_lo = edges.front().z, z_hi = z_lo;
+    for (const LineSegment& e : edges) {
+        z_lo = std::min(z_lo, e.z);
+        z_hi = std::max(z_hi, e.z);
+    }
+    const double margin = std::max(run, rp.max_behind_runs * run + rp.min_behind_m) + kSlack;
+    const double below = std::max(tp.below_m, rp.under_slack_m) + kSlack;
+    const double above = std::max(tp.max_raise_fraction, rp.max_behind_runs + 3.0) * rise + kSlack;
+    return pointsNearEdges(cloud, edges, margin, z_lo - below, z_hi + above);
+}
+
 /// Sparse-cloud mode, ascending: edges read on riser tops are raised to the treads behind them
 /// (TreadHeights), all of them onto the line inside the bounds of the rays that cleared them
 /// (RayClearance), then the remaining low ones onto the flight's nosing line (RiserHits).
@@ -150,8 +172,12 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
                           std::vector<LineSegment>& edges) {
     if (dir == StairDirection::Ascending && edges.size() >= 2) {
         const Staircase probe = makeStaircase(edges, dir, 0.0);
-        raiseEdgesToTreads(cloud, probe.step_height, probe.step_depth, edges);
-        fitEdgesToRayClearance(cloud, probe.step_height, probe.step_depth, edges);
+        // Both steps look only at the points near the flight (each picks its own with
+        // pointsNearEdges): one pass over the cloud for a box holding both of theirs, not two.
+        const PointCloud near = pointsNearBothCorrections(cloud, edges, probe.step_height,
+                                                          probe.step_depth);
+        raiseEdgesToTreads(near, probe.step_height, probe.step_depth, edges);
+        fitEdgesToRayClearance(near, probe.step_height, probe.step_depth, edges);
     }
     raiseLowEdges(edges, kRiserHitMinDrop);
 }
