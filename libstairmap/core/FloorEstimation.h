@@ -17,7 +17,7 @@ struct FloorSearch {
 
 /// Mode of the z histogram (3-bin window) of the points within radius_m, refined to the mean z of
 /// the points within one bin of the mode. std::nullopt if the best level has too little support.
-/// Non-finite points are skipped. Cost: two passes over (at most ~10k points of) the cloud.
+/// Non-finite points are skipped. Cost: one pass over (at most ~10k points of) the cloud.
 std::optional<double> dominantLevel(const PointCloud& cloud, const FloorSearch& search);
 
 }  // namespace stairmap
