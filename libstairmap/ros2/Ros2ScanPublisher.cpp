@@ -1,5 +1,6 @@
 #include "ros2/Ros2ScanPublisher.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <thread>
@@ -31,9 +32,21 @@ void Ros2ScanPublisher::publish(const Scan& scan, const PointCloud& points_senso
                                  dds_strretcode(a < 0 ? a : b));
 }
 
+namespace {
+constexpr double kOdomGraceS = 1.0;  ///< [s] longest wait for an odometry reader once clouds have one
+}  // namespace
+
 int Ros2ScanPublisher::waitForSubscribers(double timeout_s, const std::function<bool()>& stop) const {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
     while (matchedReaders(points_writer_) == 0 && !stop() && std::chrono::steady_clock::now() < end)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    // A subscriber's odometry reader is discovered on its own and may match a little later than
+    // its cloud reader: a scan published before would reach it without its pose. Wait for one
+    // too, briefly (a viewer of the clouds alone has none).
+    const auto odom_end =
+        std::min(end, std::chrono::steady_clock::now() + std::chrono::duration<double>(kOdomGraceS));
+    while (matchedReaders(points_writer_) > 0 && matchedReaders(odom_writer_) == 0 && !stop() &&
+           std::chrono::steady_clock::now() < odom_end)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     return matchedReaders(points_writer_);
 }

@@ -21,8 +21,9 @@ public:
     /// Writes the odometry (scan.T_world_robot at scan.stamp_s) and the cloud
     /// `points_sensor` (the scan's points in the sensor frame) with the same stamp.
     void publish(const Scan& scan, const PointCloud& points_sensor);
-    /// Waits until the clouds have at least one subscriber or timeout_s passed or stop() is true;
-    /// returns the subscribers matched.
+    /// Waits until the clouds have at least one subscriber or timeout_s passed or stop() is true,
+    /// then up to 1 s more (within timeout_s) until the odometry has one too, so that the first
+    /// scans do not reach a subscriber without their poses; returns the cloud subscribers matched.
     int waitForSubscribers(double timeout_s, const std::function<bool()>& stop) const;
     /// Waits up to timeout_s for reliable subscribers to acknowledge everything written.
     void flush(double timeout_s) const;

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -93,6 +94,32 @@ TEST(Ros2Loopback, PlayedScansArriveInTheRobotFrameWithTheirPoses) {
         EXPECT_TRUE(scan.points_robot[1].isApprox(Eigen::Vector3f(2.2f, 0.0f, 0.0f)));
     }
     EXPECT_EQ(live.source.counters().at("clouds_without_pose"), 0u);
+}
+
+TEST(Ros2Loopback, ThePublisherWaitsForTheOdometryReaderMatchedAfterTheCloudReader) {
+    // A subscriber whose odometry reader comes up 300 ms after its cloud reader (as discovery
+    // may order them): a scan published once waitForSubscribers returns must reach both.
+    Ros2PlayOptions play;
+    play.points_topic = uniqueTopic("late_odom_points");
+    play.odom_topic = uniqueTopic("late_odom_odom");
+    Ros2ScanPublisher publisher(play);
+    test::TestSubscriber clouds(&sensor_msgs_msg_dds__PointCloud2__desc, ddsTopicName(play.points_topic));
+    std::unique_ptr<test::TestSubscriber> odometry;
+    std::thread late([&] {
+        std::this_thread::sleep_for(300ms);
+        odometry = std::make_unique<test::TestSubscriber>(&nav_msgs_msg_dds__Odometry__desc,
+                                                          ddsTopicName(play.odom_topic));
+    });
+    const int subscribers = publisher.waitForSubscribers(5.0, [] { return false; });
+    Scan scan;
+    scan.stamp_s = 7.0;
+    scan.T_world_robot = robotPose(1.0, 0.2);
+    publisher.publish(scan, PointCloud{{1.0f, 0.0f, 0.0f}});
+    late.join();
+    ASSERT_EQ(subscribers, 1);
+    int poses = 0;
+    EXPECT_TRUE(odometry->receive([&](const void*) { ++poses; }, [&] { return poses > 0; }, 3s))
+        << "the scan's odometry was written before its subscriber matched";
 }
 
 TEST(Ros2Loopback, BadCloudsAndMissingPosesAreCountedNotFatal) {
