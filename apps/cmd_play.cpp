@@ -109,7 +109,8 @@ Command addPlayCommand(CLI::App& app) {
     cmd->add_option("--sensor-frame", opt->topics.cloud_frame_id, "frame_id of the clouds (default lidar)");
     cmd->add_flag("--loop", opt->loop, "start again at the end until interrupted (stamps keep increasing)");
     cmd->add_option("--wait-subscribers", opt->wait_subscribers_s,
-                    "[s] wait this long for a subscriber of the clouds before starting (default 5)");
+                    "[s] wait this long for a subscriber of the clouds before starting, then up to 1 s "
+                    "more (within it) for one of the odometry (default 5)");
     cmd->add_flag("--quiet", opt->quiet, "no messages on stderr");
     command.run = [opt, input = command.input] { return runPlay(*opt, *input); };
     return command;
