@@ -2,6 +2,7 @@
 // Helpers for the cloud-file tests: scratch folders, raw file writing, seeded clouds.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,9 +15,12 @@
 
 namespace stairmap::test {
 
-/// A fresh, empty folder STAIRMAP_TEST_TMP/<suite>/<name>.
+/// A fresh, empty folder STAIRMAP_TEST_TMP/<suite>/<name>.<pid>. The pid keeps tests that ctest
+/// runs in parallel processes apart (two CloudFileLimits tests sharing "f" removed each other's
+/// files: "cannot remove all: No such file or directory" in a CI run).
 inline std::string scratchDir(const std::string& suite, const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(STAIRMAP_TEST_TMP) / suite / name;
+    const std::filesystem::path dir =
+        std::filesystem::path(STAIRMAP_TEST_TMP) / suite / (name + "." + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir.string();
