@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace stairmap {
 namespace {
@@ -19,6 +20,50 @@ LineSegment halfway(const LineSegment& a, const LineSegment& b) {
     const Eigen::Vector2d b_start = same_order ? b.start : b.end;
     const Eigen::Vector2d b_end = same_order ? b.end : b.start;
     return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
+}
+
+/// [-] a pair within these multiples of the one-step rise and spacing is one step apart
+constexpr double kOneStepMin = 0.75;
+constexpr double kOneStepMax = 1.33;
+
+/// [m] XY distance from b's centre to a's line: the pair's horizontal spacing
+double spacing(const LineSegment& a, const LineSegment& b) {
+    return std::abs(a.distanceTo(b.centre()));
+}
+
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+
+bool oneStep(double ratio) { return ratio >= kOneStepMin && ratio <= kOneStepMax; }
+bool twoSteps(double ratio) { return ratio >= kMinGapRatio && ratio <= kMaxGapRatio; }
+
+/// The rise of one step when most of the chain's pairs are two steps apart: a sparse far view
+/// whose rings alias with the steps may give every other nosing, with one-step pairs between
+/// (dev2 r0223: 1, 2, 1, 2, 2 steps; the median then reads the two-step rise and nothing is put
+/// back). The pairs under 1/kMinGapRatio of the median rise are taken as one step, and the unit
+/// is kept only when every pair is one or two of its steps apart in both rise and horizontal
+/// spacing: raw heights of riser hits read low by up to a ring spacing, so a rise alone could make
+/// an ordinary pair look like two steps. Returns 0 when the chain is not so.
+double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
+                                 const std::vector<double>& rises, double median_rise) {
+    std::vector<double> runs(rises.size());
+    for (std::size_t i = 1; i < edges.size(); ++i) runs[i - 1] = spacing(edges[i - 1], edges[i]);
+    std::vector<double> small_rises, small_runs;
+    for (std::size_t i = 0; i < rises.size(); ++i) {
+        if (rises[i] * kMinGapRatio > median_rise) continue;
+        small_rises.push_back(rises[i]);
+        small_runs.push_back(runs[i]);
+    }
+    if (small_rises.empty()) return 0.0;
+    const double unit_rise = median(small_rises), unit_run = median(small_runs);
+    if (unit_rise <= 0.0 || unit_run <= 0.0) return 0.0;
+    for (std::size_t i = 0; i < rises.size(); ++i) {
+        const double kz = rises[i] / unit_rise, ks = runs[i] / unit_run;
+        if (!(oneStep(kz) && oneStep(ks)) && !(twoSteps(kz) && twoSteps(ks))) return 0.0;
+    }
+    return unit_rise;
 }
 
 }  // namespace
@@ -43,8 +88,9 @@ int fillMissingNosings(std::vector<LineSegment>& edges) {
     std::vector<double> rises;
     for (std::size_t i = 1; i < edges.size(); ++i)
         rises.push_back(std::abs(edges[i].z - edges[i - 1].z));
-    std::nth_element(rises.begin(), rises.begin() + rises.size() / 2, rises.end());
-    const double rise = rises[rises.size() / 2];
+    const double median_rise = median(rises);
+    const double aliased_unit = oneStepRiseOfAliasedChain(edges, rises, median_rise);
+    const double rise = aliased_unit > 0.0 ? aliased_unit : median_rise;
     if (rise <= 0.0) return 0;
     int inserted = 0;
     for (std::size_t i = 1; i < edges.size(); ++i) {

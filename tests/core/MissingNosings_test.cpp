@@ -1,0 +1,67 @@
+// Nosings the chain search stepped over are put back (fillMissingNosings), from hand-made edges.
+#include "core/MissingNosings.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace stairmap {
+namespace {
+
+constexpr double kRise = 0.125;  // [m]
+constexpr double kRun = 0.25;    // [m]
+
+/// A nosing across y in [-0.6, 0.6] at distance x, height z, seen (20 points).
+LineSegment nosing(double x, double z) {
+    LineSegment l;
+    l.start = {x, -0.6};
+    l.end = {x, 0.6};
+    l.z = z;
+    l.rho = x;
+    l.theta = 0.0;
+    l.num_points = 20;
+    return l;
+}
+
+/// The edges of a flight (kRise, kRun) at the given step indices.
+std::vector<LineSegment> edgesAtSteps(const std::vector<int>& steps) {
+    std::vector<LineSegment> edges;
+    for (int k : steps) edges.push_back(nosing(1.0 + k * kRun, k * kRise));
+    return edges;
+}
+
+TEST(MissingNosings, OneSkippedNosingIsPutBackHalfway) {
+    std::vector<LineSegment> edges = edgesAtSteps({0, 1, 2, 4, 5});
+    EXPECT_EQ(fillMissingNosings(edges), 1);
+    ASSERT_EQ(edges.size(), 6u);
+    EXPECT_EQ(edges[3].num_points, 0);
+    EXPECT_NEAR(edges[3].z, 3 * kRise, 1e-9);
+    EXPECT_NEAR(edges[3].centre().x(), 1.0 + 3 * kRun, 1e-9);
+}
+
+TEST(MissingNosings, AChainSkippingMostOtherNosingsGetsEveryStepBack) {
+    // A far ring-aliased view (dev2 r0223): pairs 1, 2, 1, 2, 2 steps apart. The median pair is
+    // two steps, so the median rise alone reads the flight at twice its rise and puts nothing back.
+    std::vector<LineSegment> edges = edgesAtSteps({0, 1, 3, 4, 6, 8});
+    EXPECT_EQ(fillMissingNosings(edges), 3);
+    ASSERT_EQ(edges.size(), 9u);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        EXPECT_NEAR(edges[k].z, k * kRise, 1e-9) << "edge " << k;
+        EXPECT_NEAR(edges[k].centre().x(), 1.0 + k * kRun, 1e-9) << "edge " << k;
+    }
+}
+
+TEST(MissingNosings, AnEdgeReadLowIsNoReasonToSplitTheOtherSteps) {
+    // Evenly spaced nosings where the last riser hit reads 7 cm low: its rise alone looks like one
+    // step of a flight with 0.10 m rises, the others two of them; but its spacing is a full run,
+    // so no step is put back anywhere.
+    std::vector<LineSegment> edges;
+    const double rise = 0.17, run = 0.28;
+    for (int k = 0; k < 6; ++k) edges.push_back(nosing(1.0 + k * run, k * rise));
+    edges[5].z -= 0.07;  // pairs: 0.17, 0.17, 0.17, 0.17, 0.10 m
+    EXPECT_EQ(fillMissingNosings(edges), 0);
+    EXPECT_EQ(edges.size(), 6u);
+}
+
+}  // namespace
+}  // namespace stairmap
