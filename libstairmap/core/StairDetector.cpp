@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/CylindricalRows.h"
+#include "core/FlightContinuation.h"
 #include "core/FlightJoin.h"
 #include "core/FlightPoints.h"
 #include "core/FloorEstimation.h"
@@ -201,10 +202,9 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     if (!up) search.min_steps = std::max(2, p.min_steps - 1);
     std::vector<int> refused;
     std::vector<char> used;
-    const auto chains = searchStaircases(lines, floor_z, p.floor_tolerance_m, search,
-                                         debug ? &refused : nullptr, debug ? &used : nullptr, up);
-    if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
-    for (const auto& chain : chains) {
+    const auto chains = searchStaircases(lines, floor_z, p.floor_tolerance_m, search, &refused,
+                                         debug ? &used : nullptr, up);
+    const auto edgesOf = [&](const std::vector<int>& chain) {
         std::vector<LineSegment> edges;
         for (int idx : chain) {
             edges.push_back(lines[idx]);
@@ -213,6 +213,10 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         fillMissingNosings(edges);  // edges the search stepped over
         // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
         if (p.edge_height_tolerance_m > 0) correctRiserTopEdges(cloud, dir, edges);
+        return edges;
+    };
+    for (const auto& chain : chains) {
+        std::vector<LineSegment> edges = edgesOf(chain);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
         if (static_cast<int>(edges.size()) < p.min_steps) {
             if (debug && debug->rejected.size() < DetectorDebug::kMaxRejected)
@@ -222,6 +226,27 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         }
         out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }
+    // The chain that ended the search one edge short: the foot of a longer flight when the cloud
+    // shows the tread above its last edge or below a first edge two rises up (FlightContinuation);
+    // else it may be a stage.
+    if (up && static_cast<int>(refused.size()) == p.min_steps - 1) {
+        std::vector<LineSegment> edges = edgesOf(refused);
+        FlightContinuationParams cp;
+        cp.min_rise_m = p.min_step_height_m;
+        bool continued = false;
+        if (static_cast<int>(edges.size()) == p.min_steps - 1) {  // none put back in between
+            if ((continued = treadAboveLastEdge(cloud, edges, cp))) {
+                edges.push_back(nextNosing(edges));
+            } else if ((continued = treadBelowFirstEdge(cloud, edges, floor_z, cp))) {
+                edges.insert(edges.begin(), previousNosing(edges));
+            }
+        }
+        if (continued) {
+            out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+            refused.clear();  // not a refusal after all
+        }
+    }
+    if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
 }
 
 /// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its

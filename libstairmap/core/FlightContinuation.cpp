@@ -1,0 +1,138 @@
+#include "core/FlightContinuation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/MissingNosings.h"
+
+namespace stairmap {
+namespace {
+
+/// The chain's mean rise, mean run and the unit normal of its last edge pointing up the flight.
+struct ChainStep {
+    double rise = 0.0, run = 0.0;
+    Eigen::Vector2d up = Eigen::Vector2d::Zero();
+};
+
+ChainStep chainStep(const std::vector<LineSegment>& edges) {
+    ChainStep c;
+    const LineSegment& first = edges.front();
+    const LineSegment& last = edges.back();
+    const double n = static_cast<double>(edges.size() - 1);
+    c.rise = (last.z - first.z) / n;
+    const Eigen::Vector2d d = last.direction();
+    c.up = Eigen::Vector2d(d.y(), -d.x());
+    if (c.up.dot(last.centre() - first.centre()) < 0) c.up = -c.up;
+    c.run = c.up.dot(last.centre() - first.centre()) / n;
+    return c;
+}
+
+/// Every pair's rise and run near the chain's mean, every edge near-parallel to the last.
+bool regularStraightChain(const std::vector<LineSegment>& edges, const ChainStep& step,
+                          const FlightContinuationParams& p) {
+    if (step.rise < p.min_rise_m) return false;
+    const double cos_turn = std::cos(p.max_turn_deg * M_PI / 180.0);
+    for (std::size_t i = 1; i < edges.size(); ++i) {
+        const double rise = edges[i].z - edges[i - 1].z;
+        const double run = step.up.dot(edges[i].centre() - edges[i - 1].centre());
+        if (std::abs(rise - step.rise) > p.max_step_deviation * step.rise ||
+            std::abs(run - step.run) > p.max_step_deviation * step.run)
+            return false;
+    }
+    const Eigen::Vector2d d = edges.back().direction();
+    for (const LineSegment& e : edges)
+        if (std::abs(e.direction().dot(d)) < cos_turn) return false;
+    return true;
+}
+
+}  // namespace
+
+namespace {
+
+/// Points around one tread of the flight: `on` at `z` within tread_dz in the window
+/// [s_lo, s_hi] along `up` from `c` and within `half` of it along the edge, `other` at `z_other`
+/// there, `above` higher than z + above_dz.
+struct TreadWindow {
+    int on = 0, other = 0, above = 0;
+    double t_min = 1e9, t_max = -1e9;
+    double spread() const { return on > 0 ? t_max - t_min : 0.0; }
+};
+
+TreadWindow countTread(const PointCloud& cloud, const Eigen::Vector2d& c, const Eigen::Vector2d& u,
+                       const Eigen::Vector2d& up, double half, double s_lo, double s_hi, double z,
+                       double z_other, const FlightContinuationParams& p) {
+    TreadWindow w;
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!q.allFinite()) continue;
+        const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
+        const double s = up.dot(d), t = u.dot(d);
+        if (s < s_lo || s > s_hi || std::abs(t) > half) continue;
+        if (std::abs(q.z() - z) <= p.tread_dz_m) {
+            ++w.on;
+            w.t_min = std::min(w.t_min, t);
+            w.t_max = std::max(w.t_max, t);
+        } else if (std::abs(q.z() - z_other) <= p.tread_dz_m) {
+            ++w.other;
+        } else if (q.z() > z + p.above_dz_m) {
+            ++w.above;
+        }
+    }
+    return w;
+}
+
+/// The window shows a tread: enough points spread along the edge, more than at the other level
+/// (a platform, or the floor) and hardly any above it (a wall, a box).
+bool showsTread(const TreadWindow& w, double half, const FlightContinuationParams& p) {
+    return w.on >= p.min_points && w.on > w.other && 4 * w.above <= w.on &&
+           w.spread() >= p.min_spread_fraction * 2.0 * half;
+}
+
+}  // namespace
+
+bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                        const FlightContinuationParams& p) {
+    if (edges.size() < 2) return false;
+    const ChainStep step = chainStep(edges);
+    if (!(step.rise > 0.0) || !(step.run > 0.0) || !regularStraightChain(edges, step, p))
+        return false;
+    const LineSegment& last = edges.back();
+    const double half = 0.5 * last.length() * (1.0 - 2.0 * p.end_fraction);
+    const TreadWindow w =
+        countTread(cloud, last.centre(), last.direction(), step.up, half, p.from_runs * step.run,
+                   p.to_runs * step.run, last.z + step.rise, last.z, p);
+    return showsTread(w, half, p);
+}
+
+bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                         double floor_z, const FlightContinuationParams& p) {
+    if (edges.size() < 2) return false;
+    const ChainStep step = chainStep(edges);
+    if (!(step.rise > 0.0) || !(step.run > 0.0) || !regularStraightChain(edges, step, p))
+        return false;
+    const LineSegment& first = edges.front();
+    // The first edge two rises above the floor: one step below it is missing.
+    if (std::abs(first.z - floor_z - 2.0 * step.rise) > p.tread_dz_m) return false;
+    const double half = 0.5 * first.length() * (1.0 - 2.0 * p.end_fraction);
+    // The step's tread lies between its nosing (one run in front) and the first edge's riser:
+    // the window mirrors the one above the last edge.
+    const TreadWindow w = countTread(cloud, first.centre(), first.direction(), step.up, half,
+                                     -(p.to_runs - 1.0) * step.run, -(p.from_runs - 1.0) * step.run,
+                                     first.z - step.rise, floor_z, p);
+    return showsTread(w, half, p);
+}
+
+LineSegment nextNosing(const std::vector<LineSegment>& edges) {
+    const ChainStep step = chainStep(edges);
+    const LineSegment& last = edges.back();
+    const Eigen::Vector2d shift = step.run * step.up;
+    return unseenNosing(last.start + shift, last.end + shift, last.z + step.rise);
+}
+
+LineSegment previousNosing(const std::vector<LineSegment>& edges) {
+    const ChainStep step = chainStep(edges);
+    const LineSegment& first = edges.front();
+    const Eigen::Vector2d shift = -step.run * step.up;
+    return unseenNosing(first.start + shift, first.end + shift, first.z - step.rise);
+}
+
+}  // namespace stairmap

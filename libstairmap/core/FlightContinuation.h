@@ -1,0 +1,55 @@
+#pragma once
+// A short chain that is the foot of a longer flight (issue 10, whole flights). Algorithm 1 needs
+// min_steps edges (4): a chain of three is what a two-step stage gives (two steps and its
+// platform's edge), so it is refused. But a far or oblique view often finds the lines of only three
+// nosings of a long flight while the tread one step above the last of them is in the cloud (dev:
+// 26 misses end as chains of 2-3 edges). A stage's platform is flat behind its edge; a flight's
+// next tread lies one rise higher and one run further. Where the cloud shows that tread, the
+// chain gets its next nosing back (unseen: no line of its own) and counts.
+
+#include <vector>
+
+#include "core/LineSegment.h"
+#include "core/PointCloud.h"
+
+namespace stairmap {
+
+struct FlightContinuationParams {
+    double tread_dz_m = 0.03;     ///< [m] a point is on a tread within this of its height
+    /// [-] the next tread's window behind the last edge, in runs: one run further (the next
+    /// nosing) plus the middle of the tread (away from both risers)
+    double from_runs = 1.2;
+    double to_runs = 1.8;
+    double end_fraction = 0.15;   ///< [0..1] of the edge's length left out at each end (walls)
+    /// [0..1] the next tread's points must spread over at least this fraction of the edge's length
+    double min_spread_fraction = 0.2;
+    int min_points = 4;           ///< [-] fewest points on the next tread
+    /// [m] points this far above the next tread in its window are a wall or a box, not a tread
+    double above_dz_m = 0.08;
+    /// [-] the chain itself must be a regular straight flight: every pair's rise and run within
+    /// this fraction of the chain's mean ...
+    double max_step_deviation = 0.2;
+    double max_turn_deg = 8.0;    ///< [deg] ... and its edges this parallel to the last one
+    double min_rise_m = 0.11;     ///< [m] mean rise at least this (DetectorParams condition 1)
+};
+
+/// Whether `edges` (an ascending chain from the floor up, real z, at least 2 edges) are a regular
+/// straight flight (see the params) and the cloud shows the tread one step above the last: points at the last edge's height + rise within
+/// tread_dz, in the window from_runs..to_runs runs behind it, spread along it, more of them than at
+/// the last edge's own height there (a platform), and none higher up there. Rise and run are the
+/// chain's means. Non-finite points are ignored. Cost: one pass over the cloud.
+bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                        const FlightContinuationParams& params = {});
+
+/// Whether `edges` (as above) are a regular straight flight whose first edge lies two rises above
+/// the floor at floor_z, and the cloud shows the tread of the step below it: points one rise below
+/// the first edge in the middle of the run in front of it, more of them than at the floor's height.
+bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                         double floor_z, const FlightContinuationParams& params = {});
+
+/// The nosing one rise above and one run behind the last edge (unseen, num_points 0), as wide as it.
+LineSegment nextNosing(const std::vector<LineSegment>& edges);
+/// The nosing one rise below and one run in front of the first edge (unseen), as wide as it.
+LineSegment previousNosing(const std::vector<LineSegment>& edges);
+
+}  // namespace stairmap

@@ -1,0 +1,101 @@
+// A chain one edge short of a flight: continued only where the cloud shows the tread above its last
+// edge (or below its first), never on a stage's platform. Hand-made edges and clouds.
+#include "core/FlightContinuation.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace stairmap {
+namespace {
+
+constexpr double kRise = 0.17;  // [m]
+constexpr double kRun = 0.30;   // [m]
+
+/// A nosing across y in [-0.6, 0.6] at distance x, height z (seen, 20 points).
+LineSegment nosing(double x, double z) {
+    LineSegment l;
+    l.start = {x, -0.6};
+    l.end = {x, 0.6};
+    l.z = z;
+    l.rho = x;
+    l.theta = 0.0;
+    l.num_points = 20;
+    return l;
+}
+
+/// Step k of a flight rising along +x from the floor at z = 0: nosing at x = 1 + (k - 1) run.
+LineSegment step(int k) { return nosing(1.0 + (k - 1) * kRun, k * kRise); }
+
+/// Points on a horizontal rectangle x in [x0, x1], y in [-0.6, 0.6] at height z, 2 cm apart.
+void addTread(PointCloud& cloud, double x0, double x1, double z) {
+    for (double x = x0; x < x1; x += 0.02)
+        for (double y = -0.6; y <= 0.6; y += 0.02)
+            cloud.emplace_back(float(x), float(y), float(z));
+}
+
+/// The flight's treads 1..3 (each one run deep, behind its nosing).
+PointCloud threeTreads() {
+    PointCloud cloud;
+    for (int k = 1; k <= 3; ++k) addTread(cloud, 1.0 + (k - 1) * kRun, 1.0 + k * kRun, k * kRise);
+    return cloud;
+}
+
+TEST(FlightContinuation, TheTreadAboveTheLastEdgeAddsTheNextNosing) {
+    PointCloud cloud = threeTreads();
+    addTread(cloud, 1.0 + 3 * kRun, 1.0 + 4 * kRun, 4 * kRise);  // step 4, its nosing line unfound
+    const std::vector<LineSegment> edges = {step(1), step(2), step(3)};
+    ASSERT_TRUE(treadAboveLastEdge(cloud, edges));
+    const LineSegment next = nextNosing(edges);
+    EXPECT_NEAR(next.z, 4 * kRise, 1e-6);
+    EXPECT_NEAR(next.centre().x(), 1.0 + 3 * kRun, 1e-6);
+    EXPECT_NEAR(next.length(), 1.2, 1e-6);
+    EXPECT_EQ(next.num_points, 0);
+}
+
+TEST(FlightContinuation, AStagesPlatformBehindTheLastEdgeIsNoNextStep) {
+    // Two steps and the platform's edge (the generator's two-step stage): flat 4 m behind.
+    PointCloud cloud = threeTreads();
+    addTread(cloud, 1.0 + 3 * kRun, 5.0, 3 * kRise);
+    EXPECT_FALSE(treadAboveLastEdge(cloud, {step(1), step(2), step(3)}));
+}
+
+TEST(FlightContinuation, AWallBehindTheLastEdgeIsNoNextStep) {
+    PointCloud cloud = threeTreads();
+    // A wall one and a half runs behind the last nosing, from the floor up: some of its points lie
+    // at the next tread's height, most above it.
+    const double x = 1.0 + 3.5 * kRun;
+    for (double z = 0.0; z < 2.0; z += 0.02)
+        for (double y = -0.6; y <= 0.6; y += 0.02) cloud.emplace_back(float(x), float(y), float(z));
+    EXPECT_FALSE(treadAboveLastEdge(cloud, {step(1), step(2), step(3)}));
+}
+
+TEST(FlightContinuation, AnIrregularChainIsNotContinued) {
+    PointCloud cloud = threeTreads();
+    addTread(cloud, 1.0 + 3 * kRun, 1.0 + 4 * kRun, 4 * kRise);
+    // The last edge one and a half runs behind the second: no regular flight.
+    EXPECT_FALSE(treadAboveLastEdge(cloud, {step(1), step(2), nosing(1.0 + 2.5 * kRun, 3 * kRise)}));
+}
+
+TEST(FlightContinuation, TheTreadBelowAFirstEdgeTwoRisesUpAddsThePreviousNosing) {
+    PointCloud cloud = threeTreads();
+    addTread(cloud, 1.0 + 3 * kRun, 1.0 + 4 * kRun, 4 * kRise);
+    const std::vector<LineSegment> edges = {step(2), step(3), step(4)};  // step 1's line unfound
+    ASSERT_TRUE(treadBelowFirstEdge(cloud, edges, 0.0));
+    const LineSegment previous = previousNosing(edges);
+    EXPECT_NEAR(previous.z, kRise, 1e-6);
+    EXPECT_NEAR(previous.centre().x(), 1.0, 1e-6);
+}
+
+TEST(FlightContinuation, TheFloorInFrontOfTheFirstEdgeIsNoStepBelow) {
+    // The same chain two rises up, but the floor runs up to it: a platform's front, no step.
+    PointCloud cloud;
+    addTread(cloud, 0.0, 1.0 + kRun, 0.0);
+    for (int k = 2; k <= 4; ++k) addTread(cloud, 1.0 + (k - 1) * kRun, 1.0 + k * kRun, k * kRise);
+    EXPECT_FALSE(treadBelowFirstEdge(cloud, {step(2), step(3), step(4)}, 0.0));
+    // ...and a chain whose first edge is one rise up has no step missing below it.
+    EXPECT_FALSE(treadBelowFirstEdge(threeTreads(), {step(1), step(2), step(3)}, 0.0));
+}
+
+}  // namespace
+}  // namespace stairmap
