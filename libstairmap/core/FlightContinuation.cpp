@@ -45,10 +45,6 @@ bool regularStraightChain(const std::vector<LineSegment>& edges, const ChainStep
     return true;
 }
 
-}  // namespace
-
-namespace {
-
 /// Points around one tread of the flight: `on` at `z` within tread_dz in the window
 /// [s_lo, s_hi] along `up` from `c` and within `half` of it along the edge, `other` at `z_other`
 /// there, `above` higher than z + above_dz.
@@ -88,6 +84,13 @@ bool showsTread(const TreadWindow& w, double half, const FlightContinuationParam
 }
 
 }  // namespace
+
+bool isRegularStraightChain(const std::vector<LineSegment>& edges,
+                            const FlightContinuationParams& p) {
+    if (edges.size() < 2) return false;
+    const ChainStep step = chainStep(edges);
+    return step.rise > 0.0 && step.run > 0.0 && regularStraightChain(edges, step, p);
+}
 
 bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                         const FlightContinuationParams& p) {

@@ -33,6 +33,12 @@ struct FlightContinuationParams {
     double min_rise_m = 0.11;     ///< [m] mean rise at least this (DetectorParams condition 1)
 };
 
+/// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
+/// every pair's rise and run within max_step_deviation of the chain's means, the mean rise at least
+/// min_rise_m, every edge within max_turn_deg of the last. No points needed: the cheap test first.
+bool isRegularStraightChain(const std::vector<LineSegment>& edges,
+                            const FlightContinuationParams& params = {});
+
 /// Whether `edges` (an ascending chain from the floor up, real z, at least 2 edges) are a regular
 /// straight flight (see the params) and the cloud shows the tread one step above the last: points at the last edge's height + rise within
 /// tread_dz, in the window from_runs..to_runs runs behind it, spread along it, more of them than at

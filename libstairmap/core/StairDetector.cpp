@@ -211,12 +211,15 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
             if (!up) edges.back().z = 2 * floor_z - edges.back().z;
         }
         fillMissingNosings(edges);  // edges the search stepped over
-        // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
-        if (p.edge_height_tolerance_m > 0) correctRiserTopEdges(cloud, dir, edges);
         return edges;
+    };
+    // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
+    const auto correct = [&](std::vector<LineSegment>& edges) {
+        if (p.edge_height_tolerance_m > 0) correctRiserTopEdges(cloud, dir, edges);
     };
     for (const auto& chain : chains) {
         std::vector<LineSegment> edges = edgesOf(chain);
+        correct(edges);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
         if (static_cast<int>(edges.size()) < p.min_steps) {
             if (debug && debug->rejected.size() < DetectorDebug::kMaxRejected)
@@ -234,7 +237,9 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         FlightContinuationParams cp;
         cp.min_rise_m = p.min_step_height_m;
         bool continued = false;
-        if (static_cast<int>(edges.size()) == p.min_steps - 1) {  // none put back in between
+        // None put back in between; the point-free test before the passes over the cloud.
+        if (static_cast<int>(edges.size()) == p.min_steps - 1 && isRegularStraightChain(edges, cp)) {
+            correct(edges);
             if ((continued = treadAboveLastEdge(cloud, edges, cp))) {
                 edges.push_back(nextNosing(edges));
             } else if ((continued = treadBelowFirstEdge(cloud, edges, floor_z, cp))) {
