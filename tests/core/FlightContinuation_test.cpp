@@ -6,6 +6,8 @@
 
 #include <vector>
 
+#include "support/HandMadeNosing.h"
+
 namespace stairmap {
 namespace {
 
@@ -13,16 +15,7 @@ constexpr double kRise = 0.17;  // [m]
 constexpr double kRun = 0.30;   // [m]
 
 /// A nosing across y in [-0.6, 0.6] at distance x, height z (seen, 20 points).
-LineSegment nosing(double x, double z) {
-    LineSegment l;
-    l.start = {x, -0.6};
-    l.end = {x, 0.6};
-    l.z = z;
-    l.rho = x;
-    l.theta = 0.0;
-    l.num_points = 20;
-    return l;
-}
+LineSegment nosing(double x, double z) { return test::nosingAcrossY(x, z, 0.6); }
 
 /// Step k of a flight rising along +x from the floor at z = 0: nosing at x = 1 + (k - 1) run.
 LineSegment step(int k) { return nosing(1.0 + (k - 1) * kRun, k * kRise); }

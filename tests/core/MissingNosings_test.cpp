@@ -5,6 +5,8 @@
 
 #include <vector>
 
+#include "support/HandMadeNosing.h"
+
 namespace stairmap {
 namespace {
 
@@ -12,16 +14,7 @@ constexpr double kRise = 0.125;  // [m]
 constexpr double kRun = 0.25;    // [m]
 
 /// A nosing across y in [-0.6, 0.6] at distance x, height z, seen (20 points).
-LineSegment nosing(double x, double z) {
-    LineSegment l;
-    l.start = {x, -0.6};
-    l.end = {x, 0.6};
-    l.z = z;
-    l.rho = x;
-    l.theta = 0.0;
-    l.num_points = 20;
-    return l;
-}
+LineSegment nosing(double x, double z) { return test::nosingAcrossY(x, z, 0.6); }
 
 /// The edges of a flight (kRise, kRun) at the given step indices.
 std::vector<LineSegment> edgesAtSteps(const std::vector<int>& steps) {

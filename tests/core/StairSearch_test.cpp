@@ -5,20 +5,13 @@
 
 #include <vector>
 
+#include "support/HandMadeNosing.h"
+
 namespace stairmap {
 namespace {
 
 /// A nosing line across y in [-0.5, 0.5] at distance x, height z (its normal along +x).
-LineSegment nosing(double x, double z) {
-    LineSegment l;
-    l.start = {x, -0.5};
-    l.end = {x, 0.5};
-    l.z = z;
-    l.rho = x;
-    l.theta = 0.0;
-    l.num_points = 20;
-    return l;
-}
+LineSegment nosing(double x, double z) { return test::nosingAcrossY(x, z, 0.5); }
 
 /// Four nosings 0.17 m apart in height, the first three 0.25 m apart; the fourth `last_run` [m]
 /// behind the third. Returns the longest chain found (indices into the lines).

@@ -6,23 +6,15 @@
 #include <cmath>
 #include <limits>
 
+#include "support/HandMadeNosing.h"
+
 namespace stairmap {
 namespace {
 
 constexpr double kRise = 0.17, kRun = 0.30, kX0 = 3.0;  // flight along +x, nosing k at x0 + k run
 
 /// Edge k of the flight, across y in [-0.6, 0.6], at height z.
-LineSegment edge(int k, double z) {
-    LineSegment l;
-    const double x = kX0 + k * kRun;
-    l.start = {x, -0.6};
-    l.end = {x, 0.6};
-    l.z = z;
-    l.rho = x;
-    l.theta = 0.0;
-    l.num_points = 20;
-    return l;
-}
+LineSegment edge(int k, double z) { return test::nosingAcrossY(kX0 + k * kRun, z, 0.6); }
 
 double nosingZ(int k) { return k * kRise; }
 
