@@ -30,7 +30,7 @@ ChainStep chainStep(const std::vector<LineSegment>& edges) {
 /// Every pair's rise and run near the chain's mean, every edge near-parallel to the last.
 bool regularStraightChain(const std::vector<LineSegment>& edges, const ChainStep& step,
                           const FlightContinuationParams& p) {
-    if (step.rise < p.min_rise_m) return false;
+    if (step.rise < p.min_rise_m - p.mean_rise_noise_m) return false;
     const double cos_turn = std::cos(p.max_turn_deg * M_PI / 180.0);
     for (std::size_t i = 1; i < edges.size(); ++i) {
         const double rise = edges[i].z - edges[i - 1].z;

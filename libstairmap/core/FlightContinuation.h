@@ -30,12 +30,16 @@ struct FlightContinuationParams {
     /// this fraction of the chain's mean ...
     double max_step_deviation = 0.2;
     double max_turn_deg = 8.0;    ///< [deg] ... and its edges this parallel to the last one
-    double min_rise_m = 0.11;     ///< [m] mean rise at least this (DetectorParams condition 1)
+    double min_rise_m = 0.11;     ///< [m] mean rise at least this (DetectorParams condition 1) ...
+    /// [m] ... less this: the noise of a mean of two measured rises (flights of 0.10-0.11 m rises
+    /// read 0.096-0.107 m: dev r0074, dev2 r0078)
+    double mean_rise_noise_m = 0.015;
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
 /// every pair's rise and run within max_step_deviation of the chain's means, the mean rise at least
-/// min_rise_m, every edge within max_turn_deg of the last. No points needed: the cheap test first.
+/// min_rise_m - mean_rise_noise_m, every edge within max_turn_deg of the last. No points needed:
+/// the cheap test first.
 bool isRegularStraightChain(const std::vector<LineSegment>& edges,
                             const FlightContinuationParams& params = {});
 
