@@ -94,10 +94,8 @@ bool isRegularStraightChain(const std::vector<LineSegment>& edges,
 
 bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                         const FlightContinuationParams& p) {
-    if (edges.size() < 2) return false;
+    if (!isRegularStraightChain(edges, p)) return false;
     const ChainStep step = chainStep(edges);
-    if (!(step.rise > 0.0) || !(step.run > 0.0) || !regularStraightChain(edges, step, p))
-        return false;
     const LineSegment& last = edges.back();
     const double half = 0.5 * last.length() * (1.0 - 2.0 * p.end_fraction);
     const TreadWindow w =
@@ -108,10 +106,8 @@ bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
 
 bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                          double floor_z, const FlightContinuationParams& p) {
-    if (edges.size() < 2) return false;
+    if (!isRegularStraightChain(edges, p)) return false;
     const ChainStep step = chainStep(edges);
-    if (!(step.rise > 0.0) || !(step.run > 0.0) || !regularStraightChain(edges, step, p))
-        return false;
     const LineSegment& first = edges.front();
     // The first edge two rises above the floor: one step below it is missing.
     if (std::abs(first.z - floor_z - 2.0 * step.rise) > p.tread_dz_m) return false;

@@ -3,7 +3,7 @@
 // min_steps edges (4): a chain of three is what a two-step stage gives (two steps and its
 // platform's edge), so it is refused. But a far or oblique view often finds the lines of only three
 // nosings of a long flight while the tread one step above the last of them is in the cloud (dev:
-// 26 misses end as chains of 2-3 edges). A stage's platform is flat behind its edge; a flight's
+// 22 misses end as a refused chain of 2-3 edges on the flight's nosings). A stage's platform is flat behind its edge; a flight's
 // next tread lies one rise higher and one run further. Where the cloud shows that tread, the
 // chain gets its next nosing back (unseen: no line of its own) and counts.
 
@@ -44,10 +44,11 @@ bool isRegularStraightChain(const std::vector<LineSegment>& edges,
                             const FlightContinuationParams& params = {});
 
 /// Whether `edges` (an ascending chain from the floor up, real z, at least 2 edges) are a regular
-/// straight flight (see the params) and the cloud shows the tread one step above the last: points at the last edge's height + rise within
-/// tread_dz, in the window from_runs..to_runs runs behind it, spread along it, more of them than at
-/// the last edge's own height there (a platform), and none higher up there. Rise and run are the
-/// chain's means. Non-finite points are ignored. Cost: one pass over the cloud.
+/// straight flight (isRegularStraightChain) and the cloud shows the tread one step above the last:
+/// points at the last edge's height + rise within tread_dz, in the window from_runs..to_runs runs
+/// behind it, spread along it, more of them than at the last edge's own height there (a platform),
+/// and at most a quarter as many higher up there (a wall, a box). Rise and run are the chain's
+/// means. Non-finite points are ignored. Cost: one pass over the cloud.
 bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                         const FlightContinuationParams& params = {});
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/UpperMedian.h"
+
 namespace stairmap {
 namespace {
 
@@ -31,11 +33,6 @@ double spacing(const LineSegment& a, const LineSegment& b) {
     return std::abs(a.distanceTo(b.centre()));
 }
 
-double median(std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 bool oneStep(double ratio) { return ratio >= kOneStepMin && ratio <= kOneStepMax; }
 bool twoSteps(double ratio) { return ratio >= kMinGapRatio && ratio <= kMaxGapRatio; }
 
@@ -57,7 +54,7 @@ double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
         small_runs.push_back(runs[i]);
     }
     if (small_rises.empty()) return 0.0;
-    const double unit_rise = median(small_rises), unit_run = median(small_runs);
+    const double unit_rise = upperMedian(small_rises), unit_run = upperMedian(small_runs);
     if (unit_rise <= 0.0 || unit_run <= 0.0) return 0.0;
     for (std::size_t i = 0; i < rises.size(); ++i) {
         const double kz = rises[i] / unit_rise, ks = runs[i] / unit_run;
@@ -88,7 +85,7 @@ int fillMissingNosings(std::vector<LineSegment>& edges) {
     std::vector<double> rises;
     for (std::size_t i = 1; i < edges.size(); ++i)
         rises.push_back(std::abs(edges[i].z - edges[i - 1].z));
-    const double median_rise = median(rises);
+    const double median_rise = upperMedian(rises);
     const double aliased_unit = oneStepRiseOfAliasedChain(edges, rises, median_rise);
     const double rise = aliased_unit > 0.0 ? aliased_unit : median_rise;
     if (rise <= 0.0) return 0;

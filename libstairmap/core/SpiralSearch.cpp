@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "core/MissingNosings.h"
+#include "core/UpperMedian.h"
 
 namespace stairmap {
 namespace {
@@ -185,11 +186,6 @@ LineSegment turned(const LineSegment& l, const Eigen::Vector2d& axis, double rot
     return m;
 }
 
-double median(std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 /// Nosings and back edges. Where the next wedge's top is unseen (above a level LiDAR), a tread's
 /// back edge reads as a drop too: a second helix one step angle ahead of the nosings' in the
 /// ascent's sense (at height z, the angle of the nosing one rise higher). Of the lines one step
@@ -288,7 +284,7 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
     std::vector<double> outers;
     double inner = 1e9;
     for (const auto& [k, r] : idx) outers.push_back(r.far), inner = std::min(inner, r.near);
-    const double outer = median(outers);
+    const double outer = upperMedian(outers);
     const double run = (inner + outer) * std::sin(0.5 * step_angle);  // chord at mid radius
     if (run < p.min_run_m || run > p.max_run_m) return f;
     for (std::size_t i = 0; i < idx.size(); ++i) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/UpperMedian.h"
+
 namespace stairmap::exporting {
 namespace {
 
@@ -14,12 +16,6 @@ double sampleStd(const std::vector<double>& v) {
     double ss = 0.0;
     for (double x : v) ss += (x - mean) * (x - mean);
     return std::sqrt(ss / static_cast<double>(v.size() - 1));
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
 }
 
 /// Horizontal spacing of consecutive nosings along the uphill heading.
@@ -54,7 +50,7 @@ FlightGeometry measureFlight(const StaircaseLandmark& landmark, double landing_r
     const Eigen::Vector2d up = headingVector(s.heading_rad);
 
     const std::vector<double> gaps = spacings(s.steps, up);
-    const double landing_gap = landing_run_factor * median(gaps);
+    const double landing_gap = gaps.empty() ? 0.0 : landing_run_factor * upperMedian(gaps);
     std::vector<double> rises, runs, widths;
     int risers_in_run = 1;  // the first nosing tops the first riser
     g.max_risers_between_landings = 1;
