@@ -22,6 +22,8 @@ struct RejectedChain {
 
 struct DetectorDebug {
     double floor_z = 0.0;                    ///< [m] floor height used
+    double floor_noise_m = 0.0;              ///< [m] floor height noise measured (0: not measured)
+    double split_distance_m = 0.0;           ///< [m] d_p used (raised for a noisy cloud)
     std::vector<TopViewCell> candidates;     ///< top-view nosing candidate columns (flags set)
     std::vector<LineSegment> lines_ascending;   ///< lines of the front-drop rows (one row each)
     std::vector<LineSegment> lines_descending;  ///< lines of the back-drop rows

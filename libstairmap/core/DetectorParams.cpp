@@ -59,6 +59,8 @@ void DetectorParams::validate() const {
     requireRange(edge_spill_dz_m, 0.0, 1.0, "edge_spill_dz_m");
     requireRange(neighbour_walk_m, 0.001, 1.0, "neighbour_walk_m");
     requireRange(split_distance_m, 1e-4, 1.0, "split_distance_m");
+    requireRange(split_noise_factor, 0.0, 100.0, "split_noise_factor");
+    requireRange(max_split_distance_m, split_distance_m, 1.0, "max_split_distance_m");
     requireRange(min_line_points, 2, 100000, "min_line_points");
     requireRange(min_line_length_m, 0.0, 10.0, "min_line_length_m");
     requireRange(max_point_gap_m, 1e-3, 10.0, "max_point_gap_m");

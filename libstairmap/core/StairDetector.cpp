@@ -8,6 +8,7 @@
 #include "core/FlightJoin.h"
 #include "core/FlightPoints.h"
 #include "core/FloorEstimation.h"
+#include "core/FloorNoise.h"
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
 #include "core/MissingNosings.h"
@@ -44,6 +45,20 @@ std::pair<double, bool> resolveFloor(const PointCloud& cloud, std::optional<doub
     s.z_hi = 0.3;  // the robot frame origin is on or above the floor it stands on
     const auto level = dominantLevel(cloud, s);
     return {level.value_or(-0.5), true};
+}
+
+/// `p` with the split distance d_p raised for a noisy cloud (DetectorParams::split_noise_factor).
+DetectorParams withNoisySplitDistance(const DetectorParams& p, const PointCloud& cloud,
+                                      double floor_z, DetectorDebug* debug) {
+    DetectorParams out = p;
+    if (p.split_noise_factor > 0) {
+        const double noise = floorHeightNoise(cloud, floor_z);
+        out.split_distance_m = std::clamp(p.split_noise_factor * noise, p.split_distance_m,
+                                          std::max(p.split_distance_m, p.max_split_distance_m));
+        if (debug) debug->floor_noise_m = noise;
+    }
+    if (debug) debug->split_distance_m = out.split_distance_m;
+    return out;
 }
 
 SegmentationParams segmentationParams(const DetectorParams& p) {
@@ -322,12 +337,13 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     buildTopView(cloud_robot, tp, cells);
     if (debug) debug->candidates = cells;
 
+    const DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
     std::vector<LineSegment> front_drops, back_drops;  // real z, for the spiral search
-    if (params_.detect_ascending)
-        detectDirection(cloud_robot, cells, StairDirection::Ascending, floor, params_, result.staircases,
+    if (p.detect_ascending)
+        detectDirection(cloud_robot, cells, StairDirection::Ascending, floor, p, result.staircases,
                         debug, front_drops);
-    if (params_.detect_descending)
-        detectDirection(cloud_robot, cells, StairDirection::Descending, floor, params_, result.staircases,
+    if (p.detect_descending)
+        detectDirection(cloud_robot, cells, StairDirection::Descending, floor, p, result.staircases,
                         debug, back_drops);
     mergeOverlappingFlights(result.staircases);  // Algorithm 2 on the detector's own chains
     FlightJoinParams jp;

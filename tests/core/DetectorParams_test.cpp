@@ -87,6 +87,10 @@ INSTANTIATE_TEST_SUITE_P(
                              [](DetectorParams& p) { p.max_step_height_m = 0.05; }},
                     BadValue{"min_slope_deg", [](DetectorParams& p) { p.min_slope_deg = 70; }},
                     BadValue{"point_sigma_m", [](DetectorParams& p) { p.point_sigma_m = -1; }},
+                    BadValue{"split_noise_factor",
+                             [](DetectorParams& p) { p.split_noise_factor = -1; }},
+                    BadValue{"max_split_distance_m",  // below the fixed d_p it would raise
+                             [](DetectorParams& p) { p.max_split_distance_m = 0.02; }},
                     BadValue{"floor_tolerance_m",
                              [](DetectorParams& p) { p.floor_tolerance_m = 0.2; }},
                     BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }},

@@ -86,6 +86,8 @@ void readPreprocessing(const SectionReader& r, DetectorParams& p) {
 
 void readSegmentation(const SectionReader& r, DetectorParams& p) {
     r.number("split_distance_m", p.split_distance_m);
+    r.number("split_noise_factor", p.split_noise_factor);
+    r.number("max_split_distance_m", p.max_split_distance_m);
     r.integer("min_line_points", p.min_line_points);
     r.number("min_line_length_m", p.min_line_length_m);
     r.number("max_point_gap_m", p.max_point_gap_m);

@@ -34,12 +34,15 @@ TEST(DetectorConfig, MissingSectionKeepsDefaults) {
 TEST(DetectorConfig, ReadsNumbersIntegersBooleansAndRobotHeight) {
     const DetectorConfig c = load(
         "[detector]\nleaf_size_m = 0.03\nmin_steps = 4\ndetect_descending = false\n"
-        "robot_height_m = 0.62\nmax_slope_deg = 55\n");
+        "robot_height_m = 0.62\nmax_slope_deg = 55\nsplit_noise_factor = 0\n"
+        "max_split_distance_m = 0.04\n");
     EXPECT_DOUBLE_EQ(c.params.leaf_size_m, 0.03);
     EXPECT_EQ(c.params.min_steps, 4);
     EXPECT_FALSE(c.params.detect_descending);
     EXPECT_TRUE(c.params.detect_ascending);
     EXPECT_DOUBLE_EQ(c.params.max_slope_deg, 55.0);
+    EXPECT_DOUBLE_EQ(c.params.split_noise_factor, 0.0);
+    EXPECT_DOUBLE_EQ(c.params.max_split_distance_m, 0.04);
     ASSERT_TRUE(c.robot_height_m.has_value());
     EXPECT_DOUBLE_EQ(*c.robot_height_m, 0.62);
 }
@@ -66,6 +69,8 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_DOUBLE_EQ(c.params.edge_spill_dz_m, d.edge_spill_dz_m);
     EXPECT_DOUBLE_EQ(c.params.neighbour_walk_m, d.neighbour_walk_m);
     EXPECT_DOUBLE_EQ(c.params.max_collinear_gap_m, d.max_collinear_gap_m);
+    EXPECT_DOUBLE_EQ(c.params.split_noise_factor, d.split_noise_factor);
+    EXPECT_DOUBLE_EQ(c.params.max_split_distance_m, d.max_split_distance_m);
     EXPECT_EQ(c.params.azimuth_bins, d.azimuth_bins);
     EXPECT_EQ(c.params.min_steps, d.min_steps);
     ASSERT_TRUE(c.robot_height_m.has_value());
