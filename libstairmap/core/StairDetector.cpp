@@ -360,6 +360,10 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
             s.slope_rad = std::atan2(s.step_height, s.step_depth);
         }
     }
+    // Measured, a second view of one flight shows: two chains through the same nosings seen in
+    // pieces (a far VLP-16's, dev2 r0070; a depth camera's scattered ones, dev2 r0031) lie at the
+    // same levels, their found edges side by side, but their measured treads overlap.
+    mergeOverlappingFlights(result.staircases);
     if (debug) debug->accepted = result.staircases;
     return result;
 }

@@ -75,5 +75,17 @@ INSTANTIATE_TEST_SUITE_P(DevScenes, NoisyDepthCameraFlight,
                                          std::make_tuple(1001, 279), std::make_tuple(1001, 288),
                                          std::make_tuple(3003, 31), std::make_tuple(3003, 224)));
 
+/// A far VLP-16 sees a wide flight's nosings in pieces: two chains through them, side by side, are
+/// one flight once their treads are measured (dev2 scene 70, reported twice before).
+TEST(FlightSeenInPieces, IsReportedOnce) {
+    const sim::RandomCloud scene = benchmarkScene(3003, 70);
+    ASSERT_FALSE(scene.truth.staircases.empty());
+    const StaircaseTruth& truth = scene.truth.staircases.front();
+    const DetectionResult result = StairDetector().detect(scene.cloud, scene.truth.observer_floor_z);
+    int on_truth = 0;
+    for (const Staircase& s : result.staircases) on_truth += reportsFlight(s, truth) ? 1 : 0;
+    EXPECT_EQ(on_truth, 1) << result.staircases.size() << " staircases in the cloud";
+}
+
 }  // namespace
 }  // namespace stairmap
