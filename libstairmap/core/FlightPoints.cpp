@@ -4,22 +4,28 @@
 
 namespace stairmap {
 
+FlightBox flightBox(const std::vector<LineSegment>& edges, double margin_m, double z_lo,
+                    double z_hi) {
+    FlightBox box;
+    box.lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+    box.hi = -box.lo;
+    for (const LineSegment& e : edges) {
+        box.lo = box.lo.cwiseMin(e.start).cwiseMin(e.end);
+        box.hi = box.hi.cwiseMax(e.start).cwiseMax(e.end);
+    }
+    box.lo.array() -= margin_m;
+    box.hi.array() += margin_m;
+    box.z_lo = z_lo;
+    box.z_hi = z_hi;
+    return box;
+}
+
 PointCloud pointsNearEdges(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                            double margin_m, double z_lo, double z_hi) {
-    Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector2d hi = -lo;
-    for (const LineSegment& e : edges) {
-        lo = lo.cwiseMin(e.start).cwiseMin(e.end);
-        hi = hi.cwiseMax(e.start).cwiseMax(e.end);
-    }
-    lo.array() -= margin_m;
-    hi.array() += margin_m;
+    const FlightBox box = flightBox(edges, margin_m, z_lo, z_hi);
     PointCloud out;
-    for (const Eigen::Vector3f& q : cloud) {  // NaN fails every comparison: dropped
-        if (q.x() >= lo.x() && q.x() <= hi.x() && q.y() >= lo.y() && q.y() <= hi.y() &&
-            q.z() >= z_lo && q.z() <= z_hi)
-            out.push_back(q);
-    }
+    for (const Eigen::Vector3f& q : cloud)
+        if (box.contains(q)) out.push_back(q);
     return out;
 }
 

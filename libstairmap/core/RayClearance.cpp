@@ -36,38 +36,85 @@ std::pair<double, double> feasibleOffsets(const std::vector<LineSegment>& edges,
     return {a_lo, a_hi};
 }
 
+/// The rays that cleared edge k: the heights where the rays to the points behind it (min_behind_m
+/// to max_behind_runs runs, through the middle of the edge, not under it) cross its line.
+struct ClearanceProbe {
+    Eigen::Vector2d n, u, c;
+    double edge_range = 0, z = 0, beside_lo = 0, beside_hi = 0, min_behind = 0, max_behind = 0;
+    double under_slack = 0;
+    std::size_t step = 0;         ///< k
+    bool looks_at_riser = false;  ///< the sensor (origin) looks at the riser's face
+    std::vector<double> clearances;
+
+    void add(const Eigen::Vector3f& q) {
+        const Eigen::Vector2d xy(q.x(), q.y());
+        const double range = n.dot(xy);
+        const double behind = range - edge_range;
+        if (!(behind >= min_behind && behind <= max_behind)) return;  // NaN too
+        const double t = edge_range / range;  // where the ray from the origin crosses the line
+        const double beside = u.dot(t * xy - c);
+        if (beside < beside_lo || beside > beside_hi) return;
+        const double h = t * q.z();
+        if (h < z - under_slack) return;  // passed under the tread or beside the flight
+        clearances.push_back(h);
+    }
+    /// The clearance_rank-th lowest clearance, +infinity when fewer rays cleared the edge.
+    double upperBound(int clearance_rank) {
+        const std::size_t rank = static_cast<std::size_t>(std::max(1, clearance_rank));
+        if (!looks_at_riser || clearances.size() < rank) return kInfinity;
+        std::nth_element(clearances.begin(), clearances.begin() + (rank - 1), clearances.end());
+        return clearances[rank - 1];
+    }
+};
+
+ClearanceProbe clearanceProbe(const std::vector<LineSegment>& edges, std::size_t k, double run,
+                              const RayClearanceParams& p) {
+    const LineSegment& e = edges[k];
+    ClearanceProbe r;
+    r.step = k;
+    r.n = upFlightNormal(edges, k);
+    r.u = Eigen::Vector2d(-r.n.y(), r.n.x());
+    r.c = e.centre();
+    r.edge_range = r.n.dot(r.c);
+    r.looks_at_riser = r.edge_range > p.min_behind_m;
+    r.z = e.z;
+    const double a = r.u.dot(e.start - r.c), b = r.u.dot(e.end - r.c);
+    const double trim = p.end_fraction * std::abs(b - a);
+    r.beside_lo = std::min(a, b) + trim;
+    r.beside_hi = std::max(a, b) - trim;
+    r.min_behind = p.min_behind_m;
+    r.max_behind = p.max_behind_runs * run;
+    r.under_slack = p.under_slack_m;
+    return r;
+}
+
 }  // namespace
 
 double nosingClearance(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                        std::size_t k, double run, const RayClearanceParams& p) {
     if (k >= edges.size() || edges.size() < 2 || !(run > 0)) return kInfinity;
-    const LineSegment& e = edges[k];
-    const Eigen::Vector2d n = upFlightNormal(edges, k);
-    const Eigen::Vector2d u(-n.y(), n.x());
-    const Eigen::Vector2d c = e.centre();
-    const double edge_range = n.dot(c);  // the sensor (origin) must look at the riser's face
-    if (!(edge_range > p.min_behind_m)) return kInfinity;
-    const double a = u.dot(e.start - c), b = u.dot(e.end - c);
-    const double trim = p.end_fraction * std::abs(b - a);
-    const double beside_lo = std::min(a, b) + trim, beside_hi = std::max(a, b) - trim;
-    const double max_behind = p.max_behind_runs * run;
-    std::vector<double> clearances;
-    for (const Eigen::Vector3f& q : cloud) {
-        const Eigen::Vector2d xy(q.x(), q.y());
-        const double range = n.dot(xy);
-        const double behind = range - edge_range;
-        if (!(behind >= p.min_behind_m && behind <= max_behind)) continue;  // NaN too
-        const double t = edge_range / range;  // where the ray from the origin crosses the line
-        const double beside = u.dot(t * xy - c);
-        if (beside < beside_lo || beside > beside_hi) continue;
-        const double h = t * q.z();
-        if (h < e.z - p.under_slack_m) continue;  // passed under the tread or beside the flight
-        clearances.push_back(h);
+    ClearanceProbe r = clearanceProbe(edges, k, run, p);
+    if (!r.looks_at_riser) return kInfinity;
+    for (const Eigen::Vector3f& q : cloud) r.add(q);
+    return r.upperBound(p.clearance_rank);
+}
+
+std::vector<double> nosingClearances(const PointCloud& cloud, const FlightBox& box,
+                                     const std::vector<LineSegment>& edges, double run,
+                                     const RayClearanceParams& p) {
+    std::vector<double> upper(edges.size(), kInfinity);
+    if (edges.size() < 2 || !(run > 0)) return upper;
+    std::vector<ClearanceProbe> probes;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        probes.push_back(clearanceProbe(edges, k, run, p));
+        if (!probes.back().looks_at_riser) probes.pop_back();
     }
-    const std::size_t rank = static_cast<std::size_t>(std::max(1, p.clearance_rank));
-    if (clearances.size() < rank) return kInfinity;
-    std::nth_element(clearances.begin(), clearances.begin() + (rank - 1), clearances.end());
-    return clearances[rank - 1];
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!box.contains(q)) continue;
+        for (ClearanceProbe& r : probes) r.add(q);
+    }
+    for (ClearanceProbe& r : probes) upper[r.step] = r.upperBound(p.clearance_rank);
+    return upper;
 }
 
 int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
@@ -78,13 +125,10 @@ int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
     const double reach = p.max_behind_runs * run + p.min_behind_m;
     const double z_hi = edges.back().z + (p.max_behind_runs + 2.0) * rise;
     // Points that can bound the edges: rays to anything higher clear the nosings by far.
-    const PointCloud near = pointsNearEdges(cloud, edges, reach, z_lo - p.under_slack_m, z_hi);
-    std::vector<double> upper(edges.size());
-    int bounded = 0;
-    for (std::size_t k = 0; k < edges.size(); ++k) {
-        upper[k] = nosingClearance(near, edges, k, run, p);
-        if (std::isfinite(upper[k])) ++bounded;
-    }
+    const FlightBox box = flightBox(edges, reach, z_lo - p.under_slack_m, z_hi);
+    const std::vector<double> upper = nosingClearances(cloud, box, edges, run, p);
+    const int bounded = static_cast<int>(
+        std::count_if(upper.begin(), upper.end(), [](double u) { return std::isfinite(u); }));
     if (bounded < p.min_bounded_edges) return 0;
     // Lines z = a + b k inside every interval: for each rise b the offsets a form an interval;
     // the centroid of that feasible set (weighted by its width) is the estimate.

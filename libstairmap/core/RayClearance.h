@@ -14,6 +14,7 @@
 
 #include <vector>
 
+#include "core/FlightPoints.h"
 #include "core/LineSegment.h"
 #include "core/PointCloud.h"
 
@@ -53,6 +54,13 @@ struct RayClearanceParams {
 /// consecutive steps, real z; `run` [m] the flight's. Non-finite points are ignored.
 double nosingClearance(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                        std::size_t k, double run, const RayClearanceParams& p = {});
+
+/// nosingClearance of every edge, from the points of `cloud` inside `box` only: equal to
+/// nosingClearance(points of cloud in box, edges, k, run, p) for each k. Cost: one pass over the
+/// cloud, each point in the box tested against every edge (not one pass per edge).
+std::vector<double> nosingClearances(const PointCloud& cloud, const FlightBox& box,
+                                     const std::vector<LineSegment>& edges, double run,
+                                     const RayClearanceParams& p = {});
 
 /// Fits the nosings' line z = a + b * index inside the bounds [edge z, clearance] of every edge
 /// (each widened by tolerance_m; rise b within rise_search_m of `rise`) and moves every edge onto

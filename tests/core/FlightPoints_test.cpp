@@ -37,6 +37,25 @@ TEST(FlightPoints, KeepsPointsInTheGrownBoxAndTheHeightBand) {
     EXPECT_FLOAT_EQ(kept[1].x(), 2.75f);
 }
 
+TEST(FlightPoints, TheBoxHoldsExactlyThePointsKept) {
+    // The corrections test flightBox inline instead of copying: both must select alike, also on
+    // the borders and for non-finite points.
+    const std::vector<LineSegment> edges = {edge(2.0, -0.5, 0.5, 0.1), edge(2.5, -0.4, 0.5, 0.3)};
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    const PointCloud cloud = {{1.75f, 0.0f, 0.2f}, {2.8f, 0.8f, 0.6f},  {1.7f, -0.8f, -0.1f},
+                              {1.65f, 0.0f, 0.2f}, {2.2f, 0.0f, 0.65f}, {nan, 0.0f, 0.2f},
+                              {2.2f, inf, 0.2f},   {2.2f, 0.0f, -inf}};
+    const FlightBox box = flightBox(edges, 0.3, -0.1, 0.6);
+    PointCloud inside;
+    for (const auto& q : cloud)
+        if (box.contains(q)) inside.push_back(q);
+    const PointCloud kept = pointsNearEdges(cloud, edges, 0.3, -0.1, 0.6);
+    ASSERT_EQ(inside.size(), kept.size());
+    for (std::size_t i = 0; i < kept.size(); ++i) EXPECT_EQ(inside[i], kept[i]);
+    EXPECT_FALSE(flightBox({}, 1.0, -1.0, 1.0).contains(Eigen::Vector3f(0.f, 0.f, 0.f)));
+}
+
 TEST(FlightPoints, NoEdgesKeepNothing) {
     const PointCloud cloud = {{0.f, 0.f, 0.f}, {1.f, 1.f, 0.5f}};
     EXPECT_TRUE(pointsNearEdges(cloud, {}, 1.0, -1.0, 1.0).empty());

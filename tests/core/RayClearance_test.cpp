@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/FlightPoints.h"
+
 namespace stairmap {
 namespace {
 
@@ -92,6 +94,34 @@ TEST(RayClearance, ClearanceIsWhereTheRayToAPointBehindCrossesTheNosing) {
     EXPECT_NEAR(nosingClearance(cloud, edges, 0, 0.3), 0.5 * 4.0 / 4.2, 1e-6);
     cloud.resize(2);  // fewer rays than clearance_rank: no bound
     EXPECT_TRUE(std::isinf(nosingClearance(cloud, edges, 0, 0.3)));
+}
+
+TEST(RayClearance, AllEdgesInOnePassEqualEachEdgeAlone) {
+    Flight f;
+    const PointCloud cloud = scanFlight(f);
+    std::vector<LineSegment> edges;
+    for (int k = 0; k < f.steps - 1; ++k) edges.push_back(riserTopEdge(cloud, f, k));
+    // A box that cuts the flight's points (above the third nosing) and one that holds them all;
+    // a high rank makes the bound depend on many rays, not only the lowest.
+    const double z_lo = edges.front().z - 0.01;
+    RayClearanceParams p;
+    for (const int rank : {3, 30})
+        for (const double z_hi : {f.nosingZ(2), 10.0}) {
+            p.clearance_rank = rank;
+            const FlightBox box = flightBox(edges, 0.6, z_lo, z_hi);
+            const PointCloud inside = pointsNearEdges(cloud, edges, 0.6, z_lo, z_hi);
+            const std::vector<double> all = nosingClearances(cloud, box, edges, f.run, p);
+            ASSERT_EQ(all.size(), edges.size());
+            int bounded = 0;
+            for (std::size_t k = 0; k < edges.size(); ++k) {
+                EXPECT_EQ(all[k], nosingClearance(inside, edges, k, f.run, p))
+                    << "edge " << k << " rank " << rank << " z_hi " << z_hi;
+                bounded += std::isfinite(all[k]);
+            }
+            EXPECT_GE(bounded, 2) << "rank " << rank << " z_hi " << z_hi;  // a test of something
+        }
+    EXPECT_TRUE(std::isinf(nosingClearances(cloud, flightBox(edges, 0.6, z_lo, 10.0),
+                                            {edges.front()}, f.run)[0]));
 }
 
 TEST(RayClearance, NothingMovesWithoutBoundsOrWhenTheyPinNothing) {
