@@ -43,34 +43,68 @@ std::optional<double> lowestFlatBand(const std::vector<TreadSample>& samples, do
     return std::nullopt;
 }
 
-/// The tread height behind edge k (see lowestFlatBand), or none.
-std::optional<double> treadHeight(const PointCloud& near_flight,
-                                  const std::vector<LineSegment>& edges, std::size_t k,
-                                  double rise, double run, const TreadHeightParams& p) {
+/// Where edge k's tread is looked for: behind the edge by near..far, within its trimmed lateral
+/// extent, from below_m under it to max_raise_fraction x rise above it. Collects the points there.
+struct TreadWindow {
+    Eigen::Vector2d c, n, u;
+    double near = 0, far = 0, lo = 0, hi = 0, z_lo = 0, z_hi = 0, min_spread = 0;
+    std::vector<TreadSample> samples;
+
+    void add(const Eigen::Vector3f& q) {
+        if (q.z() < z_lo || q.z() > z_hi) return;
+        const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
+        const double behind = n.dot(d), beside = u.dot(d);
+        if (behind < near || behind > far || beside < lo || beside > hi) return;
+        samples.push_back({q.z(), static_cast<float>(beside)});
+    }
+};
+
+TreadWindow treadWindow(const std::vector<LineSegment>& edges, std::size_t k, double rise,
+                        double run, const TreadHeightParams& p) {
     const LineSegment& e = edges[k];
     const bool last = k + 1 == edges.size();
     const Eigen::Vector2d up_flight = edges.back().centre() - edges.front().centre();
     const Eigen::Vector2d ahead = last ? e.centre() + up_flight : edges[k + 1].centre();
-    const Eigen::Vector2d n = normalTowards(e, ahead);
-    const Eigen::Vector2d u(-n.y(), n.x());
-    const double spacing = last ? run : std::max(0.0, n.dot(edges[k + 1].centre() - e.centre()));
-    const double near = p.near_fraction * spacing, far = p.far_fraction * spacing;
-    const double a = u.dot(e.start - e.centre()), b = u.dot(e.end - e.centre());
+    TreadWindow w;
+    w.c = e.centre();
+    w.n = normalTowards(e, ahead);
+    w.u = Eigen::Vector2d(-w.n.y(), w.n.x());
+    const double spacing = last ? run : std::max(0.0, w.n.dot(edges[k + 1].centre() - w.c));
+    w.near = p.near_fraction * spacing;
+    w.far = p.far_fraction * spacing;
+    const double a = w.u.dot(e.start - w.c), b = w.u.dot(e.end - w.c);
     const double trim = p.end_fraction * std::abs(b - a);
-    const double lo = std::min(a, b) + trim, hi = std::max(a, b) - trim;
-    const double z_lo = e.z - p.below_m, z_hi = e.z + p.max_raise_fraction * rise;
-    std::vector<TreadSample> samples;
-    for (const Eigen::Vector3f& q : near_flight) {
-        if (q.z() < z_lo || q.z() > z_hi) continue;
-        const Eigen::Vector2d d(q.x() - e.centre().x(), q.y() - e.centre().y());
-        const double behind = n.dot(d), beside = u.dot(d);
-        if (behind < near || behind > far || beside < lo || beside > hi) continue;
-        samples.push_back({q.z(), static_cast<float>(beside)});
-    }
-    std::sort(samples.begin(), samples.end(),
+    w.lo = std::min(a, b) + trim;
+    w.hi = std::max(a, b) - trim;
+    w.z_lo = e.z - p.below_m;
+    w.z_hi = e.z + p.max_raise_fraction * rise;
+    w.min_spread = p.min_spread_fraction * std::abs(b - a);
+    return w;
+}
+
+/// The tread height of a window filled with its points (see lowestFlatBand), or none.
+std::optional<double> treadHeight(TreadWindow& w, const TreadHeightParams& p) {
+    std::sort(w.samples.begin(), w.samples.end(),
               [](const TreadSample& x, const TreadSample& y) { return x.z < y.z; });
-    return lowestFlatBand(samples, p.flat_band_m, p.min_points,
-                          p.min_spread_fraction * std::abs(b - a));
+    return lowestFlatBand(w.samples, p.flat_band_m, p.min_points, w.min_spread);
+}
+
+/// The tread heights behind all edges (none where there is no tread), from one pass over the
+/// points of `cloud` in `box` (each point is tested against every edge's window).
+std::vector<std::optional<double>> treadHeights(const PointCloud& cloud, const FlightBox& box,
+                                                const std::vector<LineSegment>& edges,
+                                                double rise, double run,
+                                                const TreadHeightParams& p) {
+    std::vector<TreadWindow> windows;
+    for (std::size_t k = 0; k < edges.size(); ++k)
+        windows.push_back(treadWindow(edges, k, rise, run, p));
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!box.contains(q)) continue;
+        for (TreadWindow& w : windows) w.add(q);
+    }
+    std::vector<std::optional<double>> heights;
+    for (TreadWindow& w : windows) heights.push_back(treadHeight(w, p));
+    return heights;
 }
 
 }  // namespace
@@ -85,13 +119,12 @@ int raiseEdgesToTreads(const PointCloud& cloud, double rise, double run,
         z_lo = std::min(z_lo, e.z);
         z_hi = std::max(z_hi, e.z);
     }
-    const PointCloud near_flight = pointsNearEdges(cloud, edges, run, z_lo - p.below_m,
-                                                   z_hi + p.max_raise_fraction * rise);
+    const FlightBox box =
+        flightBox(edges, run, z_lo - p.below_m, z_hi + p.max_raise_fraction * rise);
+    const auto treads = treadHeights(cloud, box, edges, rise, run, p);
     std::vector<std::pair<double, double>> anchors;  // (step index, tread height)
-    for (std::size_t k = 0; k < edges.size(); ++k) {
-        const auto tread = treadHeight(near_flight, edges, k, rise, run, p);
-        if (tread) anchors.emplace_back(static_cast<double>(k), *tread);
-    }
+    for (std::size_t k = 0; k < edges.size(); ++k)
+        if (treads[k]) anchors.emplace_back(static_cast<double>(k), *treads[k]);
     // Treads are flat and evenly stacked: anchors off the line through the others are something
     // else (a ring on a riser or a post read as a tread) and are dropped, worst first.
     double a = 0, b = 0;

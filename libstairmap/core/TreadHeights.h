@@ -48,7 +48,8 @@ struct TreadHeightParams {
 /// max_raise_fraction x rise above it. When at least min_anchors treads lie on one line against
 /// the step index, every edge under that line (by less than a rise) is raised onto it. Edges are
 /// never lowered; non-finite points are ignored. Returns how many edges were raised.
-/// Cost: one pass over the cloud, then O(points in the flight's bounding box x edges).
+/// Cost: one pass over the cloud, testing each point in the flight's bounding box against every
+/// edge's tread region; then a sort of each region's points.
 int raiseEdgesToTreads(const PointCloud& cloud, double rise, double run,
                        std::vector<LineSegment>& edges, const TreadHeightParams& params = {});
 
