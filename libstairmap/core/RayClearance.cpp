@@ -37,14 +37,17 @@ std::pair<double, double> feasibleOffsets(const std::vector<LineSegment>& edges,
 }
 
 /// The rays that cleared edge k: the heights where the rays to the points behind it (min_behind_m
-/// to max_behind_runs runs, through the middle of the edge, not under it) cross its line.
+/// to max_behind_runs runs, through the middle of the edge, not under it) cross its line. Only
+/// the `rank` lowest are kept: the bound is the rank-th lowest, which no higher one changes (a
+/// dense cloud has tens of thousands of rays behind an edge).
 struct ClearanceProbe {
     Eigen::Vector2d n, u, c;
     double edge_range = 0, z = 0, beside_lo = 0, beside_hi = 0, min_behind = 0, max_behind = 0;
     double under_slack = 0;
     std::size_t step = 0;         ///< k
+    std::size_t rank = 1;         ///< clearance_rank
     bool looks_at_riser = false;  ///< the sensor (origin) looks at the riser's face
-    std::vector<double> clearances;
+    std::vector<double> lowest;   ///< the lowest clearances so far, ascending, at most rank
 
     void add(const Eigen::Vector3f& q) {
         const Eigen::Vector2d xy(q.x(), q.y());
@@ -55,15 +58,18 @@ struct ClearanceProbe {
         const double beside = u.dot(t * xy - c);
         if (beside < beside_lo || beside > beside_hi) return;
         const double h = t * q.z();
-        if (h < z - under_slack) return;  // passed under the tread or beside the flight
-        clearances.push_back(h);
+        // Passed under the tread or beside the flight (or a NaN height: no ray)
+        if (!(h >= z - under_slack)) return;
+        keep(h);
     }
-    /// The clearance_rank-th lowest clearance, +infinity when fewer rays cleared the edge.
-    double upperBound(int clearance_rank) {
-        const std::size_t rank = static_cast<std::size_t>(std::max(1, clearance_rank));
-        if (!looks_at_riser || clearances.size() < rank) return kInfinity;
-        std::nth_element(clearances.begin(), clearances.begin() + (rank - 1), clearances.end());
-        return clearances[rank - 1];
+    void keep(double h) {
+        if (lowest.size() == rank && h >= lowest.back()) return;
+        lowest.insert(std::upper_bound(lowest.begin(), lowest.end(), h), h);
+        if (lowest.size() > rank) lowest.pop_back();
+    }
+    /// The rank-th lowest clearance, +infinity when fewer rays cleared the edge.
+    double upperBound() const {
+        return looks_at_riser && lowest.size() == rank ? lowest.back() : kInfinity;
     }
 };
 
@@ -85,6 +91,7 @@ ClearanceProbe clearanceProbe(const std::vector<LineSegment>& edges, std::size_t
     r.min_behind = p.min_behind_m;
     r.max_behind = p.max_behind_runs * run;
     r.under_slack = p.under_slack_m;
+    r.rank = static_cast<std::size_t>(std::max(1, p.clearance_rank));
     return r;
 }
 
@@ -96,7 +103,7 @@ double nosingClearance(const PointCloud& cloud, const std::vector<LineSegment>& 
     ClearanceProbe r = clearanceProbe(edges, k, run, p);
     if (!r.looks_at_riser) return kInfinity;
     for (const Eigen::Vector3f& q : cloud) r.add(q);
-    return r.upperBound(p.clearance_rank);
+    return r.upperBound();
 }
 
 std::vector<double> nosingClearances(const PointCloud& cloud, const FlightBox& box,
@@ -113,7 +120,7 @@ std::vector<double> nosingClearances(const PointCloud& cloud, const FlightBox& b
         if (!box.contains(q)) continue;
         for (ClearanceProbe& r : probes) r.add(q);
     }
-    for (ClearanceProbe& r : probes) upper[r.step] = r.upperBound(p.clearance_rank);
+    for (ClearanceProbe& r : probes) upper[r.step] = r.upperBound();
     return upper;
 }
 

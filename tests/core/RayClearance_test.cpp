@@ -92,6 +92,16 @@ TEST(RayClearance, ClearanceIsWhereTheRayToAPointBehindCrossesTheNosing) {
     PointCloud cloud = {{4.2f, 0.0f, 0.5f}, {4.2f, 0.1f, 0.5f}, {4.2f, -0.1f, 0.5f},
                         {4.2f, 2.0f, 0.3f}, {4.2f, 0.0f, 0.0f}};
     EXPECT_NEAR(nosingClearance(cloud, edges, 0, 0.3), 0.5 * 4.0 / 4.2, 1e-6);
+    // Only the third lowest ray counts: a higher one or a point without height changes nothing.
+    PointCloud more = cloud;
+    more.emplace_back(4.2f, 0.05f, 0.9f);
+    more.emplace_back(4.2f, 0.05f, std::nanf(""));
+    EXPECT_EQ(nosingClearance(more, edges, 0, 0.3), nosingClearance(cloud, edges, 0, 0.3));
+    more.emplace_back(4.2f, 0.05f, 0.45f);  // a lower one does
+    EXPECT_NEAR(nosingClearance(more, edges, 0, 0.3), 0.5 * 4.0 / 4.2, 1e-6);
+    more.emplace_back(4.2f, -0.05f, 0.4f);
+    more.emplace_back(4.2f, -0.05f, 0.42f);
+    EXPECT_NEAR(nosingClearance(more, edges, 0, 0.3), 0.45 * 4.0 / 4.2, 1e-6);
     cloud.resize(2);  // fewer rays than clearance_rank: no bound
     EXPECT_TRUE(std::isinf(nosingClearance(cloud, edges, 0, 0.3)));
 }
