@@ -160,13 +160,12 @@ void recordDirection(const std::vector<LineSegment>& lines, const std::vector<ch
     explainRefusedPairs(lines, used, dir, floor_z, p, debug.rejected);
 }
 
-/// The points of `cloud` that raiseEdgesToTreads and then fitEdgesToRayClearance (default
-/// parameters) can take from it, and some more: a box around `edges` holding the boxes both
-/// select with pointsNearEdges, in cloud order. Either selects from it exactly what it would
-/// select from the whole cloud. Edges keep their XY, and raiseEdgesToTreads lifts each by less
-/// than a rise, so the second box is known before the first step runs.
-PointCloud pointsNearBothCorrections(const PointCloud& cloud, const std::vector<LineSegment>& edges,
-                                     double rise, double run) {
+/// A box around `edges` holding the boxes that raiseEdgesToTreads and then
+/// fitEdgesToRayClearance (default parameters) select their points with: either selects from
+/// the points of `cloud` in it exactly what it would select from the whole cloud. Edges keep
+/// their XY, and raiseEdgesToTreads lifts each by less than a rise, so the second box is known
+/// before the first step runs.
+FlightBox bothCorrectionsBox(const std::vector<LineSegment>& edges, double rise, double run) {
     const TreadHeightParams tp;
     const RayClearanceParams rp;
     constexpr double kSlack = 0.01;  // [m] beyond both boxes: no rounding decides a point
@@ -178,7 +177,18 @@ PointCloud pointsNearBothCorrections(const PointCloud& cloud, const std::vector<
     const double margin = std::max(run, rp.max_behind_runs * run + rp.min_behind_m) + kSlack;
     const double below = std::max(tp.below_m, rp.under_slack_m) + kSlack;
     const double above = std::max(tp.max_raise_fraction, rp.max_behind_runs + 3.0) * rise + kSlack;
-    return pointsNearEdges(cloud, edges, margin, z_lo - below, z_hi + above);
+    return flightBox(edges, margin, z_lo - below, z_hi + above);
+}
+
+/// Whether more than a third of `cloud` lies in `box`, judged from every 16th point. A sparse
+/// cloud seen from afar has a small part of it near a flight: a copy of that part spares both
+/// corrections a pass over the rest. A dense depth camera looking down at the flight has most of
+/// its view there: the copy then costs more than it spares (counting passes, break-even lies
+/// near a third).
+bool mostlyInside(const PointCloud& cloud, const FlightBox& box) {
+    std::size_t inside = 0, seen = 0;
+    for (std::size_t i = 0; i < cloud.size(); i += 16, ++seen) inside += box.contains(cloud[i]);
+    return 3 * inside > seen;
 }
 
 /// Sparse-cloud mode, ascending: edges read on riser tops are raised to the treads behind them
@@ -188,12 +198,21 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
                           std::vector<LineSegment>& edges) {
     if (dir == StairDirection::Ascending && edges.size() >= 2) {
         const Staircase probe = makeStaircase(edges, dir, 0.0);
-        // Both steps look only at the points near the flight (each picks its own with
-        // pointsNearEdges): one pass over the cloud for a box holding both of theirs, not two.
-        const PointCloud near = pointsNearBothCorrections(cloud, edges, probe.step_height,
-                                                          probe.step_depth);
-        raiseEdgesToTreads(near, probe.step_height, probe.step_depth, edges);
-        fitEdgesToRayClearance(near, probe.step_height, probe.step_depth, edges);
+        const auto correctFrom = [&](const PointCloud& points) {
+            raiseEdgesToTreads(points, probe.step_height, probe.step_depth, edges);
+            fitEdgesToRayClearance(points, probe.step_height, probe.step_depth, edges);
+        };
+        // Both steps look only at the points near the flight, each in its own box: the points in
+        // a box holding both, or the whole cloud when that would crop little (same result).
+        const FlightBox box = bothCorrectionsBox(edges, probe.step_height, probe.step_depth);
+        if (mostlyInside(cloud, box)) {
+            correctFrom(cloud);
+        } else {
+            PointCloud near;
+            for (const Eigen::Vector3f& q : cloud)
+                if (box.contains(q)) near.push_back(q);
+            correctFrom(near);
+        }
     }
     raiseLowEdges(edges, kRiserHitMinDrop);
 }
