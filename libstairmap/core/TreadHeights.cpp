@@ -82,10 +82,34 @@ TreadWindow treadWindow(const std::vector<LineSegment>& edges, std::size_t k, do
     return w;
 }
 
+bool lowerZ(const TreadSample& x, const TreadSample& y) { return x.z < y.z; }
+
+/// lowestFlatBand of `samples` (in any order) when its band starts at the lowest sample, found
+/// without sorting: the band's samples are moved to the front and only their median is put in
+/// place. None when the band at the lowest sample does not qualify (a stray point under the
+/// tread): the caller then sorts. A dense tread has thousands of samples, nearly all in the band.
+std::optional<double> bandAtLowest(std::vector<TreadSample>& samples, double band, int min_count,
+                                   double min_spread) {
+    const std::size_t need = static_cast<std::size_t>(std::max(1, min_count));
+    if (samples.size() < need) return std::nullopt;
+    const float lowest = std::min_element(samples.begin(), samples.end(), lowerZ)->z;
+    const auto end = std::partition(samples.begin(), samples.end(),
+                                    [&](const TreadSample& s) { return s.z <= lowest + band; });
+    const std::size_t count = static_cast<std::size_t>(end - samples.begin());
+    if (count < need) return std::nullopt;
+    const auto [lo, hi] = std::minmax_element(
+        samples.begin(), end,
+        [](const TreadSample& x, const TreadSample& y) { return x.beside < y.beside; });
+    if (hi->beside - lo->beside < min_spread) return std::nullopt;
+    const auto median = samples.begin() + count / 2;  // lowestFlatBand's samples[i + (j - i) / 2]
+    std::nth_element(samples.begin(), median, end, lowerZ);
+    return median->z;
+}
+
 /// The tread height of a window filled with its points (see lowestFlatBand), or none.
 std::optional<double> treadHeight(TreadWindow& w, const TreadHeightParams& p) {
-    std::sort(w.samples.begin(), w.samples.end(),
-              [](const TreadSample& x, const TreadSample& y) { return x.z < y.z; });
+    if (const auto z = bandAtLowest(w.samples, p.flat_band_m, p.min_points, w.min_spread)) return z;
+    std::sort(w.samples.begin(), w.samples.end(), lowerZ);
     return lowestFlatBand(w.samples, p.flat_band_m, p.min_points, w.min_spread);
 }
 

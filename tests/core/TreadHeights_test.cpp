@@ -76,6 +76,24 @@ TEST(TreadHeights, APostOrABoxTopIsNoTread) {
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(edges[k].z, nosingZ(k), 1e-4);
 }
 
+TEST(TreadHeights, TheBandsMedianHeightWithOrWithoutAStrayPointUnderIt) {
+    // Each tread's ring (inside the edge's trimmed ends) has 17 distinct heights 0.05 mm apart,
+    // out of height order along the ring: the band's median is the 9th lowest, 0.4 mm above the
+    // nosing. A stray point 3 cm under tread 1 is a band of its own (too few points): the next
+    // band up is the same ring.
+    PointCloud cloud;
+    std::vector<LineSegment> edges;
+    for (int k = 0; k < 4; ++k) {
+        edges.push_back(edge(k, nosingZ(k) - 0.05));
+        for (int i = 0; i < 17; ++i)
+            cloud.emplace_back(kX0 + k * kRun + 0.12, -0.4 + 0.05 * i,
+                               nosingZ(k) + 0.00005 * ((7 * i) % 17));
+    }
+    cloud.emplace_back(kX0 + kRun + 0.12, 0.0, nosingZ(1) - 0.03);
+    EXPECT_EQ(raiseEdgesToTreads(cloud, kRise, kRun, edges), 4);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(edges[k].z, nosingZ(k) + 0.0004, 1e-6) << "edge " << k;
+}
+
 TEST(TreadHeights, ARingOffTheOthersLineIsDropped) {
     // Tread 3's band is a ring on the next riser, 5 cm above its nosing: it is left out of the
     // line, and edge 3 is raised to the line of the other treads (its true height).
