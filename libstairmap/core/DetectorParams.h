@@ -43,7 +43,7 @@ struct DetectorParams {
     /// (FloorNoise.h), up to max_split_distance_m. A depth camera's range noise grows with the
     /// range squared (4-8 cm at 3-4 m): its nosings' columns scatter by more than 3 cm and break
     /// into pieces too short to be lines. With 4 the noisiest LiDAR of the dev sets gets 3.3 cm
-    /// (floor noise <= 0.82 cm), depth cameras 3.5-5 cm (0.55-3 cm). 0 = the paper's fixed d_p; the
+    /// (floor noise <= 0.82 cm), depth cameras 3-5 cm (0.67-3.2 cm). 0 = the paper's fixed d_p; the
     /// mapping presets use 0 (their submaps are accumulated, voxelised clouds, not one noisy view).
     double split_noise_factor = 4.0;
     /// [m] highest d_p a noisy cloud gets (6 cm gave 1 more flight on dev but run MAE 0.54 ->

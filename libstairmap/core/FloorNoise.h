@@ -3,7 +3,7 @@
 // split distance d_p (paper Sec. III-B) must exceed the scatter of a row's candidate columns, or a
 // noisy nosing breaks into pieces too short to be lines. A LiDAR's floor points 2.5-4.5 m away
 // scatter by 0.2-0.9 cm (range noise of about 1 cm seen at a grazing angle); a depth camera's,
-// whose range noise grows with the range squared, by 0.6-3 cm (dev, dev2 and check sets).
+// whose range noise grows with the range squared, by 0.7-3.2 cm (dev, dev2 and check sets).
 
 #include "core/PointCloud.h"
 
