@@ -20,13 +20,16 @@ FlightBox flightBox(const std::vector<LineSegment>& edges, double margin_m, doub
     return box;
 }
 
-PointCloud pointsNearEdges(const PointCloud& cloud, const std::vector<LineSegment>& edges,
-                           double margin_m, double z_lo, double z_hi) {
-    const FlightBox box = flightBox(edges, margin_m, z_lo, z_hi);
+PointCloud pointsInBox(const PointCloud& cloud, const FlightBox& box) {
     PointCloud out;
     for (const Eigen::Vector3f& q : cloud)
         if (box.contains(q)) out.push_back(q);
     return out;
+}
+
+PointCloud pointsNearEdges(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                           double margin_m, double z_lo, double z_hi) {
+    return pointsInBox(cloud, flightBox(edges, margin_m, z_lo, z_hi));
 }
 
 }  // namespace stairmap

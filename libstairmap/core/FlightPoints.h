@@ -27,6 +27,9 @@ struct FlightBox {
 FlightBox flightBox(const std::vector<LineSegment>& edges, double margin_m, double z_lo,
                     double z_hi);
 
+/// Points of `cloud` inside `box`, in cloud order. Non-finite points are dropped. One pass.
+PointCloud pointsInBox(const PointCloud& cloud, const FlightBox& box);
+
 /// Points of `cloud` inside flightBox(edges, margin_m, z_lo, z_hi), in cloud order. Non-finite
 /// points are dropped. One pass over the cloud.
 PointCloud pointsNearEdges(const PointCloud& cloud, const std::vector<LineSegment>& edges,

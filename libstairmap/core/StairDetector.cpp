@@ -205,14 +205,10 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
         // Both steps look only at the points near the flight, each in its own box: the points in
         // a box holding both, or the whole cloud when that would crop little (same result).
         const FlightBox box = bothCorrectionsBox(edges, probe.step_height, probe.step_depth);
-        if (mostlyInside(cloud, box)) {
+        if (mostlyInside(cloud, box))
             correctFrom(cloud);
-        } else {
-            PointCloud near;
-            for (const Eigen::Vector3f& q : cloud)
-                if (box.contains(q)) near.push_back(q);
-            correctFrom(near);
-        }
+        else
+            correctFrom(pointsInBox(cloud, box));
     }
     raiseLowEdges(edges, kRiserHitMinDrop);
 }
