@@ -120,6 +120,20 @@ bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>
     return showsTread(w, half, p);
 }
 
+bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                             double floor_z, const FlightContinuationParams& p) {
+    if (!isRegularStraightChain(edges, p)) return false;
+    const ChainStep step = chainStep(edges);
+    const LineSegment& first = edges.front();
+    const double landing_z = first.z - step.rise;
+    if (landing_z - floor_z < p.min_landing_height_m) return false;
+    const double half = 0.5 * first.length() * (1.0 - 2.0 * p.end_fraction);
+    const TreadWindow w = countTread(cloud, first.centre(), first.direction(), step.up, half,
+                                     -(p.to_runs - 1.0) * step.run, -(p.from_runs - 1.0) * step.run,
+                                     landing_z, floor_z, p);
+    return showsTread(w, half, p);
+}
+
 LineSegment nextNosing(const std::vector<LineSegment>& edges) {
     const ChainStep step = chainStep(edges);
     const LineSegment& last = edges.back();

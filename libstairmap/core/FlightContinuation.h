@@ -34,6 +34,10 @@ struct FlightContinuationParams {
     /// [m] ... less this: the noise of a mean of two measured rises (flights of 0.10-0.11 m rises
     /// read 0.096-0.107 m: dev r0074, dev2 r0078)
     double mean_rise_noise_m = 0.015;
+    /// [m] a landing a flight starts from lies at least this above the robot's floor: one low
+    /// step (condition 1's 0.11 m) less the tread tolerance; the real ANYmal entrance's landing is
+    /// 0.10 m above the level in front of it
+    double min_landing_height_m = 0.08;
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
@@ -57,6 +61,14 @@ bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
 /// the first edge in the middle of the run in front of it, more of them than at the floor's height.
 bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                          double floor_z, const FlightContinuationParams& params = {});
+
+/// Whether `edges` (as above) are a regular straight flight that starts from a landing or platform
+/// above the robot's floor: the surface one rise below the first edge, seen in front of it (the
+/// window of treadBelowFirstEdge), lies at least min_landing_height_m above floor_z. A two-step
+/// stage stands on the floor; three rises from a raised landing are the upper part of a flight
+/// split by it (issue 10: the real ANYmal entrance, one step up onto a landing, then the flight).
+bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                             double floor_z, const FlightContinuationParams& params = {});
 
 /// The nosing one rise above and one run behind the last edge (unseen, num_points 0), as wide as it.
 LineSegment nextNosing(const std::vector<LineSegment>& edges);

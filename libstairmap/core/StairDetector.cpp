@@ -260,8 +260,8 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }
     // The chain that ended the search one edge short: the foot of a longer flight when the cloud
-    // shows the tread above its last edge or below a first edge two rises up (FlightContinuation);
-    // else it may be a stage.
+    // shows the tread above its last edge or below a first edge two rises up, or a flight from a
+    // raised landing (FlightContinuation); else it may be a stage.
     if (up && static_cast<int>(refused.size()) == p.min_steps - 1) {
         std::vector<LineSegment> edges = edgesOf(refused);
         FlightContinuationParams cp;
@@ -274,6 +274,8 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
                 edges.push_back(nextNosing(edges));
             } else if ((continued = treadBelowFirstEdge(cloud, edges, floor_z, cp))) {
                 edges.insert(edges.begin(), previousNosing(edges));
+            } else {
+                continued = startsFromRaisedLanding(cloud, edges, floor_z, cp);
             }
         }
         if (continued) {

@@ -102,5 +102,26 @@ TEST(FlightContinuation, TheFloorInFrontOfTheFirstEdgeIsNoStepBelow) {
     EXPECT_FALSE(treadBelowFirstEdge(threeTreads(), {step(1), step(2), step(3)}, 0.0));
 }
 
+TEST(FlightContinuation, ALandingAStepAboveTheFloorInFrontOfTheFirstEdgeStartsAFlight) {
+    // Three rises from a landing 0.12 m above the floor (one rise below the first edge, seen in
+    // front of it): the upper part of a flight split by the landing.
+    const double landing = 0.12;
+    PointCloud cloud;
+    addTread(cloud, 0.0, 1.0, landing);
+    for (int k = 1; k <= 3; ++k)
+        addTread(cloud, 1.0 + (k - 1) * kRun, 1.0 + k * kRun, landing + k * kRise);
+    std::vector<LineSegment> edges;
+    for (int k = 1; k <= 3; ++k) edges.push_back(nosing(1.0 + (k - 1) * kRun, landing + k * kRise));
+    EXPECT_TRUE(startsFromRaisedLanding(cloud, edges, 0.0));
+    // The same surface seen from a floor 5 cm under it: no step up to it, a stage.
+    EXPECT_FALSE(startsFromRaisedLanding(cloud, edges, landing - 0.05));
+}
+
+TEST(FlightContinuation, AStageOnTheFloorStartsNoFlightFromALanding) {
+    PointCloud cloud = threeTreads();
+    addTread(cloud, 0.0, 1.0, 0.0);
+    EXPECT_FALSE(startsFromRaisedLanding(cloud, {step(1), step(2), step(3)}, 0.0));
+}
+
 }  // namespace
 }  // namespace stairmap

@@ -3,50 +3,17 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <tuple>
 #include <vector>
 
 #include "core/StairDetector.h"
-#include "sim/CloudSampler.h"
-#include "sim/RandomCloud.h"
+#include "support/BenchmarkScenes.h"
 
 namespace stairmap {
 namespace {
 
-/// XY distance from p to the segment a-b.
-double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    const Eigen::Vector2d ab = b - a;
-    const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-12), 0.0, 1.0);
-    return (a + t * ab - p).norm();
-}
-
-/// XY distance from p to the nearest true nosing of `truth` whose height is within dz of z.
-double distanceToNosings(const Eigen::Vector3d& p, const StaircaseTruth& truth, double dz) {
-    double best = 1e9;
-    for (const NosingSegment& n : truth.nosings) {
-        if (std::abs(p.z() - n.start.z()) < dz)
-            best = std::min(best, distanceToSegment(p.head<2>(), n.start.head<2>(), n.end.head<2>()));
-    }
-    return best;
-}
-
-/// Is `s` a report of the flight `truth`: half of its edges or more within 0.3 m of a true nosing
-/// of about their height (a second chain through the same flight's scattered nosings counts too)?
-bool reportsFlight(const Staircase& s, const StaircaseTruth& truth) {
-    std::size_t near = 0;
-    for (const StairEdge& e : s.steps) near += distanceToNosings(e.centre(), truth, 0.08) < 0.3 ? 1 : 0;
-    return 2 * near >= s.steps.size();
-}
-
-/// Scene `index` of the randomised set `seed` as `stairmap sim --random` writes it (coordinates in
-/// 2^-9 m steps, points sorted), so the cloud is the one `make eval` scores.
-sim::RandomCloud benchmarkScene(int seed, int index) {
-    sim::RandomCloud scene = sim::makeRandomCloud(static_cast<std::uint64_t>(seed), index);
-    sim::quantizeAndSort(scene.cloud, 1.0 / 512.0, true);
-    return scene;
-}
+using test::benchmarkScene;
+using test::reportsFlight;
 
 /// Seed and index of a randomised-benchmark scene: a depth camera 2.9-3.7 m from a flight.
 class NoisyDepthCameraFlight : public testing::TestWithParam<std::tuple<int, int>> {};
