@@ -75,6 +75,12 @@ struct DetectorParams {
     /// ramp's (datasets/clouds/ramp_steep_0 becomes two staircases at 12 deg).
     double min_slope_deg = 20.0;
     double max_slope_deg = 60.0;      ///< [deg] condition 3, maximum slope
+    /// [m] deep treads (LongTreads.h): an ascending chain with runs beyond max_step_depth_m up to
+    /// this counts where the cloud shows every one of its treads level (outdoor and entrance
+    /// flights; the real ANYmal entrance reads 0.44-0.64 m). 0 = off.
+    double max_level_tread_depth_m = 0.65;
+    /// [deg] condition 3's minimum slope for such chains (0.19 m rises on 0.64 m treads: 16.5 deg)
+    double min_level_tread_slope_deg = 15.0;
     /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; a spiral's
     /// wedge treads turn run / mid radius per step: 15-25 deg on wide spirals, up to 40 deg and more
     /// on narrow ones (0.3 m run at 0.45 m mid radius: 38 deg), so 45 is the default (rise, run,

@@ -11,6 +11,7 @@
 #include "core/FloorNoise.h"
 #include "core/FloorNosing.h"
 #include "core/LineFusion.h"
+#include "core/LongTreads.h"
 #include "core/MissingNosings.h"
 #include "core/OverlappingFlights.h"
 #include "core/RiserHits.h"
@@ -213,6 +214,33 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
     raiseLowEdges(edges, kRiserHitMinDrop);
 }
 
+/// A chain one edge short of min_steps (ascending, real z, corrected): the foot of a longer flight
+/// when the cloud shows the tread above its last edge (the next nosing is added) or below a first
+/// edge two rises up (the previous one is added), or a flight from a raised landing
+/// (FlightContinuation); else it may be a stage. Returns whether `edges` now count as a flight.
+bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorParams& p,
+                        std::vector<LineSegment>& edges) {
+    FlightContinuationParams cp;
+    cp.min_rise_m = p.min_step_height_m;
+    if (treadAboveLastEdge(cloud, edges, cp)) {
+        edges.push_back(nextNosing(edges));
+        return true;
+    }
+    if (treadBelowFirstEdge(cloud, edges, floor_z, cp)) {
+        edges.insert(edges.begin(), previousNosing(edges));
+        return true;
+    }
+    return startsFromRaisedLanding(cloud, edges, floor_z, cp);
+}
+
+/// Whether a short chain can be continued at all: none put back in between, a regular straight
+/// flight (the point-free test, before any pass over the cloud).
+bool mayContinue(const std::vector<LineSegment>& edges, const DetectorParams& p) {
+    FlightContinuationParams cp;
+    cp.min_rise_m = p.min_step_height_m;
+    return static_cast<int>(edges.size()) == p.min_steps - 1 && isRegularStraightChain(edges, cp);
+}
+
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
                      StairDirection dir, double floor_z, const DetectorParams& p,
                      std::vector<Staircase>& out, DetectorDebug* debug,
@@ -230,14 +258,17 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     // search may stop one edge short of min_steps, and the flight counts once that edge is added.
     DetectorParams search = p;
     if (!up) search.min_steps = std::max(2, p.min_steps - 1);
+    const bool deep_treads = up && p.max_level_tread_depth_m > p.max_step_depth_m;
     std::vector<int> refused;
+    std::vector<std::vector<int>> refused_ties;
     std::vector<char> used;
     const auto chains = searchStaircases(lines, floor_z, p.floor_tolerance_m, search, &refused,
-                                         debug ? &used : nullptr, up);
-    const auto edgesOf = [&](const std::vector<int>& chain) {
+                                         debug || deep_treads ? &used : nullptr, up,
+                                         up ? &refused_ties : nullptr);
+    const auto edgesOf = [&](const std::vector<LineSegment>& from, const std::vector<int>& chain) {
         std::vector<LineSegment> edges;
         for (int idx : chain) {
-            edges.push_back(lines[idx]);
+            edges.push_back(from[idx]);
             if (!up) edges.back().z = 2 * floor_z - edges.back().z;
         }
         fillMissingNosings(edges);  // edges the search stepped over
@@ -248,7 +279,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         if (p.edge_height_tolerance_m > 0) correctRiserTopEdges(cloud, dir, edges);
     };
     for (const auto& chain : chains) {
-        std::vector<LineSegment> edges = edgesOf(chain);
+        std::vector<LineSegment> edges = edgesOf(lines, chain);
         correct(edges);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
         if (static_cast<int>(edges.size()) < p.min_steps) {
@@ -259,29 +290,53 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         }
         out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }
-    // The chain that ended the search one edge short: the foot of a longer flight when the cloud
-    // shows the tread above its last edge or below a first edge two rises up, or a flight from a
-    // raised landing (FlightContinuation); else it may be a stage.
-    if (up && static_cast<int>(refused.size()) == p.min_steps - 1) {
-        std::vector<LineSegment> edges = edgesOf(refused);
-        FlightContinuationParams cp;
-        cp.min_rise_m = p.min_step_height_m;
-        bool continued = false;
-        // None put back in between; the point-free test before the passes over the cloud.
-        if (static_cast<int>(edges.size()) == p.min_steps - 1 && isRegularStraightChain(edges, cp)) {
+    // The chain that ended the search one edge short, or another as long (continueShortChain);
+    // `accept` is an extra test on its edges. Returns the chain that counted, if any.
+    const auto continueRefused = [&](const std::vector<LineSegment>& from,
+                                     const std::vector<int>& first,
+                                     const std::vector<std::vector<int>>& ties,
+                                     const auto& accept) -> const std::vector<int>* {
+        if (static_cast<int>(first.size()) != p.min_steps - 1) return nullptr;
+        for (std::size_t k = 0; k <= ties.size(); ++k) {
+            const std::vector<int>& chain = k == 0 ? first : ties[k - 1];
+            std::vector<LineSegment> edges = edgesOf(from, chain);
+            if (!mayContinue(edges, p)) continue;
             correct(edges);
-            if ((continued = treadAboveLastEdge(cloud, edges, cp))) {
-                edges.push_back(nextNosing(edges));
-            } else if ((continued = treadBelowFirstEdge(cloud, edges, floor_z, cp))) {
-                edges.insert(edges.begin(), previousNosing(edges));
-            } else {
-                continued = startsFromRaisedLanding(cloud, edges, floor_z, cp);
+            if (accept(edges) && continueShortChain(cloud, floor_z, p, edges)) {
+                out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+                return &chain;
             }
         }
-        if (continued) {
-            out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+        return nullptr;
+    };
+    if (up) {
+        const auto anyChain = [](const std::vector<LineSegment>&) { return true; };
+        if (const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, anyChain)) {
+            for (int idx : *taken) used[idx] = 1;
             refused.clear();  // not a refusal after all
         }
+    }
+    // Deep treads (LongTreads.h): the search again on the lines left, with runs up to
+    // max_level_tread_depth_m; a chain beyond the usual bound counts where its treads are level.
+    if (deep_treads) {
+        std::vector<LineSegment> rest;
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            if (!used[i]) rest.push_back(lines[i]);
+        DetectorParams deep = search;
+        deep.max_step_depth_m = p.max_level_tread_depth_m;
+        deep.min_slope_deg = p.min_level_tread_slope_deg;
+        std::vector<int> deep_refused;
+        std::vector<std::vector<int>> deep_ties;
+        const auto isDeepLevel = [&](const std::vector<LineSegment>& edges) {
+            return meanRun(edges) > p.max_step_depth_m && treadsSeenLevel(cloud, edges);
+        };
+        for (const auto& chain : searchStaircases(rest, floor_z, p.floor_tolerance_m, deep,
+                                                  &deep_refused, nullptr, up, &deep_ties)) {
+            std::vector<LineSegment> edges = edgesOf(rest, chain);
+            correct(edges);
+            if (isDeepLevel(edges)) out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+        }
+        continueRefused(rest, deep_refused, deep_ties, isDeepLevel);
     }
     if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
 }

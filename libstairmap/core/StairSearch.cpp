@@ -45,6 +45,9 @@ std::pair<int, int> nextStepRange(const std::vector<LineSegment>& lines, double 
     return zRange(lines, z + p.min_step_height_m - tol, z + p.max_step_height_m + tol);
 }
 
+/// [-] at most this many other chains as long as a refused one are returned (refused_ties)
+constexpr int kMaxRefusedTies = 8;
+
 struct Candidate {
     std::vector<int> steps;
     Eigen::Vector2d normal;
@@ -199,8 +202,11 @@ void extendDown(const std::vector<LineSegment>& lines, const std::vector<char>& 
 }
 
 /// Algorithm 1, initialisation over the lines near the floor; returns the longest staircase.
+/// The longest chain from any initial pair; `ties` (may be null) receives the other chains as long
+/// as it, in search order.
 Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<char>& used,
-                       double floor_z, double min_first, const DetectorParams& p) {
+                       double floor_z, double min_first, const DetectorParams& p,
+                       std::vector<Candidate>* ties) {
     Candidate best;
     const auto [b, e] =
         zRange(lines, floor_z + min_first, floor_z + p.init_height_factor * p.max_step_height_m);
@@ -213,7 +219,12 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
             if (!pair || hasLineBetween(lines, i, j, *pair, p)) continue;
             Candidate c{{i, j}, pair->normal, pair->rise, pair->normal, pair->rise, {pair->run}};
             extend(lines, used, p, c);
-            if (c.steps.size() > best.steps.size()) best = c;
+            if (c.steps.size() > best.steps.size()) {
+                best = c;
+                if (ties) ties->clear();
+            } else if (ties && c.steps.size() == best.steps.size() && c.steps != best.steps) {
+                ties->push_back(c);
+            }
         }
     }
     return best;
@@ -281,14 +292,26 @@ bool hasLineBetween(const std::vector<LineSegment>& lines, int lower, int upper,
 std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& lines,
                                                double floor_z, double min_first_height,
                                                const DetectorParams& p, std::vector<int>* refused,
-                                               std::vector<char>* used_out, bool continue_down) {
+                                               std::vector<char>* used_out, bool continue_down,
+                                               std::vector<std::vector<int>>* refused_ties) {
     std::vector<std::vector<int>> found;
     std::vector<char> used(lines.size(), 0);
+    std::vector<Candidate> ties;
     while (static_cast<int>(found.size()) < p.max_staircases_per_direction) {
-        Candidate c = bestFromInit(lines, used, floor_z, min_first_height, p);
+        ties.clear();
+        Candidate c = bestFromInit(lines, used, floor_z, min_first_height, p,
+                                   refused_ties ? &ties : nullptr);
         if (continue_down && c.steps.size() >= 2) extendDown(lines, used, p, c);
         if (static_cast<int>(c.steps.size()) < p.min_steps) {
             if (refused != nullptr && c.steps.size() >= 2) *refused = c.steps;
+            if (refused_ties != nullptr && c.steps.size() >= 2) {
+                for (Candidate& t : ties) {
+                    if (static_cast<int>(refused_ties->size()) >= kMaxRefusedTies) break;
+                    if (continue_down) extendDown(lines, used, p, t);
+                    if (t.steps.size() == c.steps.size() && t.steps != c.steps)
+                        refused_ties->push_back(t.steps);
+                }
+            }
             break;
         }
         for (int i : c.steps) used[i] = 1;

@@ -40,11 +40,14 @@ bool hasLineBetween(const std::vector<LineSegment>& sorted_lines, int lower, int
 /// shorter than min_steps (when it had two edges or more), and `used` the lines taken by results.
 /// `continue_down`: each chain is also continued below its first edge, down to the flight's foot
 /// (ascending flights rising from a pit or a landing below the robot's floor).
+/// `refused_ties` (may be null): the other chains as long as the refused one (at most 8, in search
+/// order): when a nosing's line is split at a bend, its longer piece may start the right chain.
 std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& sorted_lines,
                                                double floor_z, double min_first_height,
                                                const DetectorParams& params,
                                                std::vector<int>* refused = nullptr,
                                                std::vector<char>* used = nullptr,
-                                               bool continue_down = false);
+                                               bool continue_down = false,
+                                               std::vector<std::vector<int>>* refused_ties = nullptr);
 
 }  // namespace stairmap

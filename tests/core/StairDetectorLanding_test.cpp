@@ -17,23 +17,24 @@ namespace {
 constexpr double kFloorZ = -0.5;   // [m] the robot's floor in the robot frame
 constexpr double kCell = 0.033;    // [m] elevation-map cell
 constexpr double kRise = 0.186;    // [m] the entrance's rises
-constexpr double kRun = 0.42;      // [m]
+constexpr double kRun = 0.42;      // [m] within condition 2's bound (0.45 m)
+constexpr double kDeepRun = 0.58;  // [m] the entrance's treads read with 4 cm cells
 constexpr double kFlightX = 2.1;   // [m] the flight's first riser
 
-/// One point per cell over x in [-1, 3.4], y in [-1, 1] at the floor plus h(x) (a 2.5D map: the top
-/// surface only, the map's extent ending 0.4 m behind the last nosing).
+/// One point per cell over x in [-1, 4], y in [-1, 1] at the floor plus h(x) (a 2.5D map: the top
+/// surface only).
 PointCloud heightField(const std::function<double(double)>& h) {
     PointCloud cloud;
-    for (double x = -1.0; x < 3.4; x += kCell)
+    for (double x = -1.0; x < 4.0; x += kCell)
         for (double y = -1.0; y <= 1.0; y += kCell)
             cloud.emplace_back(float(x), float(y), float(kFloorZ + h(x)));
     return cloud;
 }
 
-/// Three rises of kRise from x = kFlightX, kRun apart, above a surface at `base` [m].
-double flight(double x, double base) {
+/// Three rises of kRise from x = kFlightX, `run` apart, above a surface at `base` [m].
+double flight(double x, double base, double run = kRun) {
     if (x < kFlightX) return base;
-    return base + kRise * std::min(3, 1 + static_cast<int>((x - kFlightX) / kRun));
+    return base + kRise * std::min(3, 1 + static_cast<int>((x - kFlightX) / run));
 }
 
 TEST(FlightFromARaisedLanding, ThreeRisesAboveALandingOneStepUpAreAFlight) {
@@ -61,6 +62,23 @@ TEST(FlightFromARaisedLanding, ALandingLowerThanAStepIsTheFloor) {
     const PointCloud cloud = heightField([](double x) { return x < 1.0 ? 0.0 : flight(x, 0.05); });
     const DetectionResult r = StairDetector().detect(cloud, kFloorZ);
     EXPECT_TRUE(r.staircases.empty()) << describe(r);
+}
+
+TEST(FlightFromARaisedLanding, DeepTreadsSeenLevelCount) {
+    // The entrance read with 4 cm cells: 0.58 m treads (beyond condition 2's 0.45 m) and a slope
+    // of 17.8 deg (below condition 3's 20 deg), each tread seen level from nosing to riser.
+    const auto entrance = [](double x) { return x < 1.0 ? 0.0 : flight(x, 0.10, kDeepRun); };
+    const PointCloud cloud = heightField(entrance);
+    const DetectionResult r = StairDetector().detect(cloud, kFloorZ);
+    ASSERT_EQ(r.staircases.size(), 1u) << describe(r);
+    EXPECT_EQ(r.staircases.front().steps.size(), 3u);
+    EXPECT_NEAR(r.staircases.front().step_height, kRise, 0.01);
+    EXPECT_NEAR(r.staircases.front().step_depth, kDeepRun, 0.02);
+    // Without the deep-tread search the same cloud gives nothing.
+    DetectorParams p;
+    p.max_level_tread_depth_m = 0.0;
+    const DetectionResult off = StairDetector(p).detect(cloud, kFloorZ);
+    EXPECT_TRUE(off.staircases.empty()) << describe(off);
 }
 
 }  // namespace

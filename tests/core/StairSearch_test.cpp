@@ -47,5 +47,25 @@ TEST(StairSearch, AShortFirstPairDoesNotSetTheRunOfTheFlight) {
     EXPECT_EQ(chains.front(), (std::vector<int>{0, 1, 2, 3, 4}));
 }
 
+TEST(StairSearch, ARefusedChainComesWithTheOtherChainsAsLong) {
+    // The first nosing seen twice: a 0.4 m piece split off at a bend (a little lower, so it sorts
+    // first) and its full line. Three edges are one short of min_steps; the chain through the
+    // full line is returned beside the refused one, for the continuation tests to try.
+    LineSegment piece = test::nosingAcrossY(0.98, 0.165, 0.2);
+    piece.start.y() += 0.4;
+    piece.end.y() += 0.4;
+    const std::vector<LineSegment> lines = {piece, nosing(1.0, 0.17), nosing(1.4, 0.34),
+                                            nosing(1.8, 0.51)};
+    DetectorParams p;
+    std::vector<int> refused;
+    std::vector<std::vector<int>> ties;
+    const auto chains =
+        searchStaircases(lines, 0.0, p.floor_tolerance_m, p, &refused, nullptr, false, &ties);
+    EXPECT_TRUE(chains.empty());
+    EXPECT_EQ(refused, (std::vector<int>{0, 2, 3}));
+    ASSERT_EQ(ties.size(), 1u);
+    EXPECT_EQ(ties.front(), (std::vector<int>{1, 2, 3}));
+}
+
 }  // namespace
 }  // namespace stairmap
