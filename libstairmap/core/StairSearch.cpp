@@ -201,9 +201,8 @@ void extendDown(const std::vector<LineSegment>& lines, const std::vector<char>& 
     }
 }
 
-/// Algorithm 1, initialisation over the lines near the floor; returns the longest staircase.
-/// The longest chain from any initial pair; `ties` (may be null) receives the other chains as long
-/// as it, in search order.
+/// Algorithm 1, initialisation over the lines near the floor: the longest chain from any initial
+/// pair; `ties` (may be null) receives the other chains as long as it, in search order.
 Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<char>& used,
                        double floor_z, double min_first, const DetectorParams& p,
                        std::vector<Candidate>* ties) {
