@@ -101,6 +101,56 @@ void addPoint(TreadScan& t, const Eigen::Vector3f& q, const StepExtentParams& p)
     else if (dz < -p.side_dz_m) t.bins[b] |= kBelow;
 }
 
+/// The scans ordered by their position along the flight, so that a point is offered only to the
+/// few whose windows may hold it (a straight flight: one or two instead of all). Along the
+/// flight's mean outward normal m, a point q lies in scan k's window [w_lo, w_hi] (in s, tread
+/// window and nosing band) only if m.(q - c_k) is within it widened by |n_k - m| |q - c_k|, and
+/// |q - c_k| is at most the diagonal of the box holding all windows. Exact: a scan left out
+/// would reject the point at its first test (addPoint).
+class ScansAlongFlight {
+public:
+    /// `indexed` false: every scan for every point (the reference).
+    ScansAlongFlight(const std::vector<TreadScan>& scans, double box_diagonal, bool indexed) {
+        Eigen::Vector2d m = Eigen::Vector2d::Zero();
+        for (const TreadScan& t : scans) m += t.n;
+        if (!indexed || scans.empty() || m.norm() < 1e-6) {
+            all_ = scans.size();  // no common direction: every scan
+            return;
+        }
+        m_ = m.normalized();
+        double turn = 0.0;
+        w_lo_ = 1e18, w_hi_ = -1e18;
+        for (std::size_t k = 0; k < scans.size(); ++k) {
+            const TreadScan& t = scans[k];
+            turn = std::max(turn, (t.n - m_).norm());
+            w_lo_ = std::min(w_lo_, std::min(t.s_lo, -t.nosing_band));
+            w_hi_ = std::max(w_hi_, std::max(t.s_hi, t.nosing_band));
+            keys_.emplace_back(m_.dot(t.c), k);
+        }
+        slack_ = turn * box_diagonal + 1e-6;  // 1e-6 m: rounding of the two dot products
+        std::sort(keys_.begin(), keys_.end());
+    }
+
+    /// Calls f(k) for every scan k whose window may hold q.
+    template <typename F>
+    void forEachReaching(const Eigen::Vector3f& q, F&& f) const {
+        if (keys_.empty()) {
+            for (std::size_t k = 0; k < all_; ++k) f(k);
+            return;
+        }
+        const double at = m_.x() * q.x() + m_.y() * q.y();
+        const double key_lo = at - w_hi_ - slack_, key_hi = at - w_lo_ + slack_;
+        auto it = std::lower_bound(keys_.begin(), keys_.end(), std::make_pair(key_lo, std::size_t{0}));
+        for (; it != keys_.end() && it->first <= key_hi; ++it) f(it->second);
+    }
+
+private:
+    Eigen::Vector2d m_ = Eigen::Vector2d::Zero();
+    double w_lo_ = 0.0, w_hi_ = 0.0, slack_ = 0.0;
+    std::vector<std::pair<double, std::size_t>> keys_;  ///< (m . c_k, k), sorted
+    std::size_t all_ = 0;
+};
+
 /// Last tread bin walking from `from` in direction `dir` (+1 / -1): across any hole up to
 /// max_gap, and across a longer one up to side_band when nothing in it rises above the tread (a
 /// sparse or shadowed tread; a wall or a box stops the walk after max_gap). A bin where the
@@ -200,9 +250,10 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
                 hi = hi.cwiseMax(q);
             }
     }
+    const ScansAlongFlight along(scans, (hi - lo).norm(), p.index_along_flight);
     for (const Eigen::Vector3f& q : cloud) {
         if (!(q.x() >= lo.x() && q.x() <= hi.x() && q.y() >= lo.y() && q.y() <= hi.y())) continue;
-        for (TreadScan& t : scans) addPoint(t, q, p);
+        along.forEachReaching(q, [&](std::size_t k) { addPoint(scans[k], q, p); });
     }
     SideVotes left, right;
     for (const TreadScan& t : scans) applyScan(t, p, stairs.steps[t.step], left, right);

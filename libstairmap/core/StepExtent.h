@@ -35,6 +35,10 @@ struct StepExtentParams {
     /// above the nosing line there (a wall, a column) and its tread window holds no point at all
     /// (a stringer beside the flight puts its top there).
     double nosing_band_runs = 0.2;
+    /// Offer each point only to the treads whose windows may hold it (indexed along the flight:
+    /// the same result, 2x fewer instructions on the randomised sets). false offers every point
+    /// to every tread: the reference the index is tested equal to.
+    bool index_along_flight = true;
 };
 
 /// Measures every step of `stairs` (robot frame, as detected) in `cloud` as described above and
@@ -42,7 +46,7 @@ struct StepExtentParams {
 /// seen, unseen when most steps saw nothing) and the geometry. The floor's own edge (first edge
 /// of a descending flight) and the landing's (last of an ascending one) border whole floors and
 /// are neither measured nor voted on. Cost: one pass over the cloud per staircase plus
-/// O(points near it x steps).
+/// O(points near it x steps reaching them): one or two steps per point on a straight flight.
 void measureStepExtents(const PointCloud& cloud, Staircase& stairs,
                         const StepExtentParams& params = {});
 
