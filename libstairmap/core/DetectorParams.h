@@ -79,6 +79,11 @@ struct DetectorParams {
     /// this counts where the cloud shows every one of its treads level (outdoor and entrance
     /// flights; the real ANYmal entrance reads 0.44-0.64 m). 0 = off.
     double max_level_tread_depth_m = 0.65;
+    /// [m] a chain of three edges whose treads are seen level and at least this deep on average
+    /// also counts when nothing is seen one step beyond its last edge (indoor flights' treads are
+    /// 0.22-0.32 m; a stage's platform would be seen there). Must lie in [min_step_depth_m,
+    /// max_level_tread_depth_m].
+    double min_deep_tread_m = 0.40;
     /// [deg] condition 3's minimum slope for such chains (0.19 m rises on 0.64 m treads: 16.5 deg)
     double min_level_tread_slope_deg = 15.0;
     /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; a spiral's

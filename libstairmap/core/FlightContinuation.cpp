@@ -120,6 +120,23 @@ bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>
     return showsTread(w, half, p);
 }
 
+bool unseenBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                          const FlightContinuationParams& p) {
+    if (!isRegularStraightChain(edges, p)) return false;
+    const ChainStep step = chainStep(edges);
+    const LineSegment& last = edges.back();
+    const Eigen::Vector2d c = last.centre(), u = last.direction();
+    const double half = 0.5 * last.length() * (1.0 - 2.0 * p.end_fraction);
+    const double s_lo = p.from_runs * step.run, s_hi = p.to_runs * step.run;
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!q.allFinite() || q.z() < last.z - p.tread_dz_m) continue;
+        const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
+        const double s = step.up.dot(d);
+        if (s >= s_lo && s <= s_hi && std::abs(u.dot(d)) <= half) return false;
+    }
+    return true;
+}
+
 bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                              double floor_z, const FlightContinuationParams& p) {
     if (!isRegularStraightChain(edges, p)) return false;

@@ -70,6 +70,12 @@ bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>
 bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                              double floor_z, const FlightContinuationParams& params = {});
 
+/// Whether `edges` (as above) are a regular straight flight and nothing at all was seen at or
+/// above the last edge's height one step beyond it (the window of treadAboveLastEdge): the flight
+/// may go on where the view does not reach, while a stage's platform would be seen there.
+bool unseenBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                          const FlightContinuationParams& params = {});
+
 /// The nosing one rise above and one run behind the last edge (unseen, num_points 0), as wide as it.
 LineSegment nextNosing(const std::vector<LineSegment>& edges);
 /// The nosing one rise below and one run in front of the first edge (unseen), as wide as it.

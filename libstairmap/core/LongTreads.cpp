@@ -36,12 +36,13 @@ bool treadSeenLevel(const PointCloud& cloud, const LineSegment& lower, const Lin
             ++on;
             t_min = std::min(t_min, t);
             t_max = std::max(t_max, t);
-        } else if (q.z() > lower.z + p.tread_dz_m && q.z() < upper.z - p.tread_dz_m) {
-            ++between;
+        } else if (q.z() > lower.z + p.tread_dz_m && q.z() < upper.z + p.above_upper_m) {
+            ++between;  // a skipped step's tread, or the next step already within the window
         }
     }
     return on >= p.min_points && between <= p.max_between_fraction * on &&
-           t_max - t_min >= p.min_spread_fraction * 2.0 * half;
+           t_max - t_min >= p.min_spread_fraction * 2.0 * half &&
+           on >= p.min_points_per_m2 * (s_hi - s_lo) * 2.0 * half;
 }
 
 }  // namespace

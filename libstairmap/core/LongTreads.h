@@ -23,14 +23,22 @@ struct LevelTreadParams {
     int min_points = 4;          ///< [-] fewest points on each tread's window
     /// [0..1] the tread's points must spread over at least this fraction of the window's width
     double min_spread_fraction = 0.2;
-    /// [-] points between the two edges' heights (a skipped step) at most this fraction of the
-    /// points on the tread
+    /// [-] points above the tread up to the upper edge's height (a skipped step's tread half-way
+    /// up, or the next step's when the found edges are not its nosings: a chain of lines 1.7 runs
+    /// apart on an open-riser flight, dev r0043) at most this fraction of the points on the tread
     double max_between_fraction = 0.25;
+    /// [m] ... counting those up to this above the upper edge's height
+    double above_upper_m = 0.08;
+    /// [1/m^2] and at least this many points per square metre of the window: 0 accepts a tread
+    /// seen by one ring; 400 (one per 5 cm cell) asks for a tread seen densely (an elevation map,
+    /// a near depth camera), where an empty patch beside it means nothing was there to be seen
+    /// (a level LiDAR's rings graze a platform 5 m away and may all miss it: dev2 r0167)
+    double min_points_per_m2 = 0.0;
 };
 
 /// Whether the cloud shows every tread of `edges` (a chain from the floor outward, z measured up
 /// the flight; at least 2 edges) level: in each window, enough points at the lower edge's height
-/// spread across it, and hardly any between the lower and the upper edge's heights. A tread not
+/// spread across it, and hardly any above it up to the upper edge's height. A tread not
 /// seen at all fails. Non-finite points are ignored. Cost: one pass over the cloud per tread.
 bool treadsSeenLevel(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                      const LevelTreadParams& params = {});

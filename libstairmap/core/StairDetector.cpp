@@ -31,6 +31,9 @@ namespace {
 
 /// [m] an edge this far below its flight's fitted nosing line is a riser hit
 constexpr double kRiserHitMinDrop = 0.02;
+/// [1/m^2] treads seen this densely (one point per 5 cm cell: elevation maps, near depth cameras)
+/// make an empty patch beyond a flight mean that nothing is there (LevelTreadParams)
+constexpr double kDenseTreadPointsPerM2 = 400.0;
 
 /// Floor height: the given one refined to the dominant level within +-window, or estimated.
 std::pair<double, bool> resolveFloor(const PointCloud& cloud, std::optional<double> floor_z,
@@ -290,28 +293,30 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         }
         out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
     }
-    // The chain that ended the search one edge short, or another as long (continueShortChain);
-    // `accept` is an extra test on its edges. Returns the chain that counted, if any.
+    // The chain that ended the search one edge short, or another as long, when `counts` says its
+    // edges are a flight (it may add the edge it continues with). Returns the chain taken.
     const auto continueRefused = [&](const std::vector<LineSegment>& from,
                                      const std::vector<int>& first,
                                      const std::vector<std::vector<int>>& ties,
-                                     const auto& accept) -> const std::vector<int>* {
+                                     const auto& counts) -> const std::vector<int>* {
         if (static_cast<int>(first.size()) != p.min_steps - 1) return nullptr;
         for (std::size_t k = 0; k <= ties.size(); ++k) {
             const std::vector<int>& chain = k == 0 ? first : ties[k - 1];
             std::vector<LineSegment> edges = edgesOf(from, chain);
             if (!mayContinue(edges, p)) continue;
             correct(edges);
-            if (accept(edges) && continueShortChain(cloud, floor_z, p, edges)) {
+            if (counts(edges)) {
                 out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
                 return &chain;
             }
         }
         return nullptr;
     };
+    const auto continued = [&](std::vector<LineSegment>& edges) {
+        return continueShortChain(cloud, floor_z, p, edges);
+    };
     if (up) {
-        const auto anyChain = [](const std::vector<LineSegment>&) { return true; };
-        if (const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, anyChain)) {
+        if (const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, continued)) {
             for (int idx : *taken) used[idx] = 1;
             refused.clear();  // not a refusal after all
         }
@@ -327,16 +332,32 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         deep.min_slope_deg = p.min_level_tread_slope_deg;
         std::vector<int> deep_refused;
         std::vector<std::vector<int>> deep_ties;
-        const auto isDeepLevel = [&](const std::vector<LineSegment>& edges) {
-            return meanRun(edges) > p.max_step_depth_m && treadsSeenLevel(cloud, edges);
+        const auto isDeepLevel = [&](const std::vector<LineSegment>& edges, double min_run,
+                                     const LevelTreadParams& lp) {
+            return meanRun(edges) > min_run && treadsSeenLevel(cloud, edges, lp);
         };
+        const auto beyondBound = [&](const std::vector<LineSegment>& edges) {
+            return isDeepLevel(edges, p.max_step_depth_m, LevelTreadParams{});
+        };
+        LevelTreadParams seen_densely;  // only then does an empty patch mean nothing there
+        seen_densely.min_points_per_m2 = kDenseTreadPointsPerM2;
         for (const auto& chain : searchStaircases(rest, floor_z, p.floor_tolerance_m, deep,
                                                   &deep_refused, nullptr, up, &deep_ties)) {
             std::vector<LineSegment> edges = edgesOf(rest, chain);
             correct(edges);
-            if (isDeepLevel(edges)) out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+            if (beyondBound(edges)) out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
         }
-        continueRefused(rest, deep_refused, deep_ties, isDeepLevel);
+        // A chain one edge short counts as usual (continueShortChain) when beyond the bound, and
+        // also when its treads are min_deep_tread_m deep and nothing is seen one step beyond its
+        // last edge (the real ANYmal entrance from its landing: the top tread's far part is
+        // unmapped), where a stage's platform would be seen.
+        FlightContinuationParams cp;
+        cp.min_rise_m = p.min_step_height_m;
+        continueRefused(rest, deep_refused, deep_ties, [&](std::vector<LineSegment>& edges) {
+            if (beyondBound(edges) && continued(edges)) return true;
+            return isDeepLevel(edges, p.min_deep_tread_m, seen_densely) &&
+                   unseenBeyondLastEdge(cloud, edges, cp);
+        });
     }
     if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
 }

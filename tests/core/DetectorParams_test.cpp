@@ -97,6 +97,8 @@ INSTANTIATE_TEST_SUITE_P(
                              [](DetectorParams& p) { p.max_level_tread_depth_m = 0.3; }},
                     BadValue{"min_level_tread_slope_deg",  // above the usual slope bound
                              [](DetectorParams& p) { p.min_level_tread_slope_deg = 30; }},
+                    BadValue{"min_deep_tread_m",  // deeper than the deep search reaches
+                             [](DetectorParams& p) { p.min_deep_tread_m = 0.7; }},
                     BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }},
                     // Top-view grid over the memory budget (the far-extent case of issue 8).
                     BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},

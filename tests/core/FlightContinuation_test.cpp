@@ -123,5 +123,21 @@ TEST(FlightContinuation, AStageOnTheFloorStartsNoFlightFromALanding) {
     EXPECT_FALSE(startsFromRaisedLanding(cloud, {step(1), step(2), step(3)}, 0.0));
 }
 
+TEST(FlightContinuation, NothingSeenBeyondTheLastEdgeIsAnUnseenTop) {
+    const std::vector<LineSegment> edges = {step(1), step(2), step(3)};
+    EXPECT_TRUE(unseenBeyondLastEdge(threeTreads(), edges));
+    // A stage's platform one step beyond: seen.
+    PointCloud stage = threeTreads();
+    addTread(stage, 1.0 + 3 * kRun, 5.0, 3 * kRise);
+    EXPECT_FALSE(unseenBeyondLastEdge(stage, edges));
+    // The next tread of a longer flight: seen too (treadAboveLastEdge takes that case).
+    PointCloud longer = threeTreads();
+    addTread(longer, 1.0 + 3 * kRun, 1.0 + 4 * kRun, 4 * kRise);
+    EXPECT_FALSE(unseenBeyondLastEdge(longer, edges));
+    // Not for an irregular chain.
+    EXPECT_FALSE(
+        unseenBeyondLastEdge(threeTreads(), {step(1), step(2), nosing(1.0 + 3.0 * kRun, 3 * kRise)}));
+}
+
 }  // namespace
 }  // namespace stairmap

@@ -66,5 +66,21 @@ TEST(LongTreads, ASlopingTreadIsNotLevel) {
     EXPECT_FALSE(treadsSeenLevel(cloud, nosings(3, kRise, kRun)));
 }
 
+TEST(LongTreads, ADenseTreadIsSeenDenselyAndARingIsNot) {
+    // 3 cm grid: ~1100 points per m^2. One LiDAR ring across each tread: a row of points.
+    PointCloud dense, ring;
+    for (int k = 1; k <= 3; ++k) {
+        addTread(dense, 1.0 + (k - 1) * kRun, 1.0 + k * kRun, k * kRise);
+        for (double y = -0.6; y <= 0.6; y += 0.03)
+            ring.emplace_back(float(1.0 + (k - 0.5) * kRun), float(y), float(k * kRise));
+    }
+    LevelTreadParams densely;
+    densely.min_points_per_m2 = 400.0;
+    const auto edges = nosings(3, kRise, kRun);
+    EXPECT_TRUE(treadsSeenLevel(ring, edges));
+    EXPECT_FALSE(treadsSeenLevel(ring, edges, densely));
+    EXPECT_TRUE(treadsSeenLevel(dense, edges, densely));
+}
+
 }  // namespace
 }  // namespace stairmap

@@ -21,11 +21,11 @@ constexpr double kRun = 0.42;      // [m] within condition 2's bound (0.45 m)
 constexpr double kDeepRun = 0.58;  // [m] the entrance's treads read with 4 cm cells
 constexpr double kFlightX = 2.1;   // [m] the flight's first riser
 
-/// One point per cell over x in [-1, 4], y in [-1, 1] at the floor plus h(x) (a 2.5D map: the top
-/// surface only).
-PointCloud heightField(const std::function<double(double)>& h) {
+/// One point per cell over x in [-1, x_max), y in [-1, 1] at the floor plus h(x) (a 2.5D map: the
+/// top surface only; nothing mapped beyond x_max).
+PointCloud heightField(const std::function<double(double)>& h, double x_max = 4.0) {
     PointCloud cloud;
-    for (double x = -1.0; x < 4.0; x += kCell)
+    for (double x = -1.0; x < x_max; x += kCell)
         for (double y = -1.0; y <= 1.0; y += kCell)
             cloud.emplace_back(float(x), float(y), float(kFloorZ + h(x)));
     return cloud;
@@ -79,6 +79,38 @@ TEST(FlightFromARaisedLanding, DeepTreadsSeenLevelCount) {
     p.max_level_tread_depth_m = 0.0;
     const DetectionResult off = StairDetector(p).detect(cloud, kFloorZ);
     EXPECT_TRUE(off.staircases.empty()) << describe(off);
+}
+
+/// The map ends this far behind the flight's last nosing (the entrance's top tread is mapped for
+/// 10-12 cells, then unknown).
+constexpr double kTopSeen = 0.35;  // [m]
+
+TEST(FlightFromARaisedLanding, SeenFromItsLandingDeepTreadsUpToAnUnmappedTopAreAFlight) {
+    // The robot on the landing: three rises off its own floor, treads 0.58 m, the top unmapped.
+    const double end = kFlightX + 2 * kDeepRun + kTopSeen;
+    const PointCloud cloud = heightField([](double x) { return flight(x, 0.0, kDeepRun); }, end);
+    const DetectionResult r = StairDetector().detect(cloud, kFloorZ);
+    ASSERT_EQ(r.staircases.size(), 1u) << describe(r);
+    EXPECT_EQ(r.staircases.front().steps.size(), 3u);
+    EXPECT_NEAR(r.staircases.front().step_depth, kDeepRun, 0.02);
+    EXPECT_NEAR(flightStartZ(r.staircases.front()) - kFloorZ, 0.0, 0.03);
+}
+
+TEST(FlightFromARaisedLanding, DeepTiersUpToASeenPlatformAreAStage) {
+    // The same tiers with the platform mapped 1.5 m deep behind them.
+    const double end = kFlightX + 2 * kDeepRun + 1.5;
+    const PointCloud cloud = heightField([](double x) { return flight(x, 0.0, kDeepRun); }, end);
+    const DetectionResult r = StairDetector().detect(cloud, kFloorZ);
+    EXPECT_TRUE(r.staircases.empty()) << describe(r);
+}
+
+TEST(FlightFromARaisedLanding, IndoorDepthTiersUpToAnUnmappedTopAreAStage) {
+    // 0.30 m tiers, the top unmapped: as deep as an indoor flight's treads and a stage's tiers,
+    // nothing tells the two apart; no flight.
+    const double end = kFlightX + 2 * 0.30 + kTopSeen;
+    const PointCloud cloud = heightField([](double x) { return flight(x, 0.0, 0.30); }, end);
+    const DetectionResult r = StairDetector().detect(cloud, kFloorZ);
+    EXPECT_TRUE(r.staircases.empty()) << describe(r);
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ TEST(DetectorConfig, ReadsNumbersIntegersBooleansAndRobotHeight) {
         "[detector]\nleaf_size_m = 0.03\nmin_steps = 4\ndetect_descending = false\n"
         "robot_height_m = 0.62\nmax_slope_deg = 55\nsplit_noise_factor = 0\n"
         "max_split_distance_m = 0.04\nmax_level_tread_depth_m = 0\n"
-        "min_level_tread_slope_deg = 12\n");
+        "min_level_tread_slope_deg = 12\nmin_deep_tread_m = 0.5\n");
     EXPECT_DOUBLE_EQ(c.params.leaf_size_m, 0.03);
     EXPECT_EQ(c.params.min_steps, 4);
     EXPECT_FALSE(c.params.detect_descending);
@@ -46,6 +46,7 @@ TEST(DetectorConfig, ReadsNumbersIntegersBooleansAndRobotHeight) {
     EXPECT_DOUBLE_EQ(c.params.max_split_distance_m, 0.04);
     EXPECT_DOUBLE_EQ(c.params.max_level_tread_depth_m, 0.0);
     EXPECT_DOUBLE_EQ(c.params.min_level_tread_slope_deg, 12.0);
+    EXPECT_DOUBLE_EQ(c.params.min_deep_tread_m, 0.5);
     ASSERT_TRUE(c.robot_height_m.has_value());
     EXPECT_DOUBLE_EQ(*c.robot_height_m, 0.62);
 }
@@ -76,6 +77,7 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_DOUBLE_EQ(c.params.max_split_distance_m, d.max_split_distance_m);
     EXPECT_DOUBLE_EQ(c.params.max_level_tread_depth_m, d.max_level_tread_depth_m);
     EXPECT_DOUBLE_EQ(c.params.min_level_tread_slope_deg, d.min_level_tread_slope_deg);
+    EXPECT_DOUBLE_EQ(c.params.min_deep_tread_m, d.min_deep_tread_m);
     EXPECT_EQ(c.params.azimuth_bins, d.azimuth_bins);
     EXPECT_EQ(c.params.min_steps, d.min_steps);
     ASSERT_TRUE(c.robot_height_m.has_value());
