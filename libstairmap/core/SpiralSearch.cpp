@@ -14,6 +14,8 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 /// [m] a nosing's near end may lie this far past the axis (noise at the column)
 constexpr double kStraddleTolerance = 0.05;
+/// [-] of the step angle: a line's angle tolerance, so that no line is near both helices
+constexpr double kMaxShareOfStep = 0.45;
 
 double wrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
@@ -241,7 +243,6 @@ bool refitOnNosingsAndBackEdges(const SpiralLines& sl, const std::vector<Radial>
 std::vector<Radial> settleOnNosings(const SpiralLines& sl, Helix& h, std::vector<Radial> in,
                                     const SpiralSearchParams& p) {
     constexpr int kIterations = 3;
-    constexpr double kMaxShareOfStep = 0.45;  ///< [-] of the step angle: no line near both helices
     for (int it = 0; it < kIterations; ++it) {
         double rise = 0.0;
         if (indexLevels(levelsOf(in, p.height_tolerance_m), p, rise).empty()) break;
@@ -264,6 +265,90 @@ std::vector<Radial> settleOnNosings(const SpiralLines& sl, Helix& h, std::vector
         if (next.size() < 3) break;
         h = g;
         in = std::move(next);
+    }
+    return in;
+}
+
+/// The line as an extra level's edge around `axis` (looser than asRadial: its inner part may be
+/// hidden by the column), its outer end near the helix's outer radius `outer`.
+bool asExtraRadial(const SpiralLines& sl, int index, const Eigen::Vector2d& axis, double outer,
+                   const SpiralSearchParams& p, Radial& out) {
+    SpiralSearchParams loose = p;
+    loose.max_axis_offset_m = p.extra_max_axis_offset_m;
+    loose.max_column_radius_m = std::max(p.max_column_radius_m, p.extra_max_inner_share * outer);
+    loose.min_outer_radius_m = std::max(p.min_outer_radius_m, p.extra_min_outer_share * outer);
+    return asRadial(sl, index, axis, loose, out);
+}
+
+/// An extra level's candidate line: its level index and how far off its helix it lies [rad].
+struct ExtraLine {
+    int level = 0;
+    double off = 0.0;
+    Radial line;
+};
+
+/// Lines (not yet used or taken, looser bounds: asExtraRadial) on the nosings' helix or the back
+/// edges' one at the height of a level in `levels`' numbering that holds no line yet.
+std::vector<ExtraLine> extraCandidates(const SpiralLines& sl, const Helix& h,
+                                       const std::vector<std::pair<int, Radial>>& levels, double rise,
+                                       const std::vector<char>& skip, const SpiralSearchParams& p) {
+    std::vector<double> outers;
+    for (const auto& [k, r] : levels) outers.push_back(r.far);
+    const double outer = upperMedian(outers);
+    const double step = h.omega * rise;
+    const double tol = std::min(p.angle_tolerance_deg * kDeg, kMaxShareOfStep * std::abs(step));
+    const auto& [ref_k, ref] = levels.front();
+    std::vector<ExtraLine> out;
+    Radial r;
+    for (int k = 0; k < static_cast<int>(sl.size()); ++k) {
+        if (skip[k] || !asExtraRadial(sl, k, h.axis, outer, p, r)) continue;
+        const double t = (r.z - ref.z) / rise;
+        const int level = ref_k + static_cast<int>(std::lround(t));
+        if (std::abs(t - std::lround(t)) * rise > p.height_tolerance_m) continue;
+        if (std::any_of(levels.begin(), levels.end(), [&](const auto& l) { return l.first == level; }))
+            continue;
+        const double on = wrapAngle(r.phi - (h.phi0 + h.omega * (r.z - h.z0)));
+        const double ahead = wrapAngle(on - step);  // on the back edges' helix
+        const double off = std::min(std::abs(on), std::abs(ahead));
+        if (off > tol) continue;
+        r.rot = std::abs(on) <= std::abs(ahead) ? 0.0 : -step;
+        r.phi += r.rot;
+        out.push_back({level, off, r});
+    }
+    return out;
+}
+
+/// Once `in` holds min_strict_levels levels (too few for a spiral), the levels it leaves empty are
+/// filled from extraCandidates, the nearest in angle per level: between two held levels, or next
+/// to the lowest or highest one (repeatedly, a close view's column hides several in a row). The
+/// axis and helix stay the strict lines' own, so extra lines alone never make a spiral.
+std::vector<Radial> withExtraLevels(const SpiralLines& sl, const Helix& h, std::vector<Radial> in,
+                                    const std::vector<char>& used, const SpiralSearchParams& p) {
+    double rise = 0.0;
+    auto levels = indexLevels(levelsOf(in, p.height_tolerance_m), p, rise);
+    // Where the strict lines hold a spiral of their own, its levels and rise stand (filling
+    // them too changed rise/run on dev/dev2 both ways, no recall gained).
+    const int held = static_cast<int>(levels.size());
+    if (held < p.min_strict_levels || held >= p.min_seen_levels) return in;
+    std::vector<char> skip = used;
+    for (const Radial& r : in) skip[r.index] = 1;
+    const auto byOff = [](const ExtraLine& a, const ExtraLine& b) { return a.off < b.off; };
+    for (bool added = true; added;) {
+        added = false;
+        auto cand = extraCandidates(sl, h, levels, rise, skip, p);
+        std::sort(cand.begin(), cand.end(), byOff);
+        for (const ExtraLine& c : cand) {
+            const int lo = levels.front().first, hi = levels.back().first;
+            if (c.level < lo - 1 || c.level > hi + 1) continue;  // no gap outside the held span
+            const auto held_here = [&](const auto& l) { return l.first == c.level; };
+            if (std::any_of(levels.begin(), levels.end(), held_here)) continue;  // a nearer one took it
+            levels.emplace_back(c.level, c.line);
+            std::sort(levels.begin(), levels.end(),
+                      [](const auto& a, const auto& b) { return a.first < b.first; });
+            in.push_back(c.line);
+            skip[c.line.index] = 1;
+            added = true;
+        }
     }
     return in;
 }
@@ -339,6 +424,7 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
     if (!in.empty()) in = settleOnNosings(sl, h, std::move(in), p);
     in.erase(std::remove_if(in.begin(), in.end(), [&](const Radial& r) { return used[r.index]; }),
              in.end());
+    in = withExtraLevels(sl, h, std::move(in), used, p);
     return buildFlight(sl, h, in, p);
 }
 

@@ -18,7 +18,10 @@
 // height) until every line sits on the nearer one, their levels must lie on one rise (a missing
 // level or two is put back), the step angle and the run at mid radius must be a stair's. The
 // candidate with the most levels (then seen levels, then lines) wins; its lines are removed and the
-// search repeats.
+// search repeats. A candidate whose lines hold min_strict_levels levels but fewer than
+// min_seen_levels (a close view: the column hides the inner part of the lower nosings) has its
+// empty levels next to or between them filled by lines under looser bounds that lie on its helix's
+// angle and rise; they never move its axis or helix.
 
 #include <vector>
 
@@ -47,6 +50,14 @@ struct SpiralSearchParams {
     /// (tests/pipeline/TwoFloorDrive); 5 keeps dev recall and lowers spiral rise MAE
     int min_seen_levels = 5;
     int max_spirals = 2;                   ///< [-] search repeats on the remaining lines
+    /// Extra levels, admitted once a helix holds this many levels of lines found under the bounds
+    /// above [-]: where a close view's column hides a nosing's inner part, or a back edge's line
+    /// passes a little farther from the fitted axis, a level sits exactly on the helix's angle and
+    /// height yet fails them. Such lines only fill levels left empty and never move the axis.
+    int min_strict_levels = 3;
+    double extra_max_axis_offset_m = 0.12;  ///< [m] an extra level's line passes this close to the axis
+    double extra_max_inner_share = 0.8;     ///< [-] its inner end at most this share of the outer radius
+    double extra_min_outer_share = 0.8;     ///< [-] its outer end at least this share of the outer radius
 };
 
 /// A found spiral: its nosings from the lowest up (z real, put-back levels have num_points 0).

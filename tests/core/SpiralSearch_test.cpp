@@ -37,6 +37,48 @@ LineSegment radialLine(const Helix& h, double phi, double z) {
     return l;
 }
 
+/// A radial line seen only from `near` outward (the column hides its inner part), its line passing
+/// `offset` [m] beside the axis.
+LineSegment outerPartOf(const Helix& h, double phi, double z, double near, double offset = 0.0) {
+    const Eigen::Vector2d u(std::cos(phi), std::sin(phi));
+    const Eigen::Vector2d side(-u.y(), u.x());
+    LineSegment l = radialLine(h, phi, z);
+    l.start = h.axis + near * u + offset * side;
+    l.end = h.axis + (h.outer - 0.02) * u + offset * side;
+    Eigen::Vector2d n = side;
+    if (n.dot(l.start) < 0) n = -n;
+    l.rho = n.dot(l.start);
+    l.theta = std::atan2(n.y(), n.x());
+    return l;
+}
+
+/// Angle between the edge's direction (from its end nearer the axis) and nosing k's.
+double angleError(const LineSegment& e, const Helix& h, int k) {
+    const bool start_near = (e.start - h.axis).norm() < (e.end - h.axis).norm();
+    const Eigen::Vector2d d = start_near ? e.end - e.start : e.start - e.end;
+    return std::abs(std::remainder(std::atan2(d.y(), d.x()) - h.angleOf(k), 2.0 * M_PI));
+}
+
+/// A close view by a level LiDAR (dev2 r0228): the column hides the inner part of the lower
+/// nosings (k = 1, 2 seen from 0.6 m out, past max_column_radius_m), and level 3 shows only its
+/// back edge, from 0.52 m out and 0.1 m beside the axis (past max_axis_offset_m).
+std::vector<LineSegment> closeViewLines(const Helix& h, int full_levels) {
+    std::vector<LineSegment> lines;
+    for (int k = 1; k <= 2; ++k) lines.push_back(outerPartOf(h, h.angleOf(k), h.zOf(k), 0.6));
+    lines.push_back(outerPartOf(h, h.angleOf(4), h.zOf(3), 0.52, 0.1));
+    for (int k = 7 - full_levels; k <= 6; ++k) lines.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    return lines;
+}
+
+Helix closeViewHelix() {
+    Helix h;
+    h.inner = 0.19;
+    h.outer = 0.83;
+    h.rise = 0.17;
+    h.step = 42.0 * kDeg;
+    return h;
+}
+
 /// XY distance of the edge's centre from nosing k's centre.
 double centreError(const LineSegment& e, const Helix& h, int k) {
     const Eigen::Vector2d u(std::cos(h.angleOf(k)), std::sin(h.angleOf(k)));
@@ -127,6 +169,30 @@ TEST(SpiralSearch, SettlesOnTheNosingsWhenBothAreSeenAtSomeLevels) {
     ASSERT_EQ(f.edges.size(), 8u);
     EXPECT_NEAR(f.step_angle_rad, std::abs(h.step), 1.5 * kDeg);
     for (int k = 1; k <= 8; ++k) EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.05) << k;
+}
+
+TEST(SpiralSearch, FillsLevelsOfAnEstablishedHelixWithLinesPartlyHiddenByTheColumn) {
+    const Helix h = closeViewHelix();
+    const auto spirals = findSpirals(closeViewLines(h, 3), {}, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 6u);
+    EXPECT_EQ(f.seen_levels, 6);
+    EXPECT_LT((f.axis - h.axis).norm(), 0.01);
+    for (int k = 1; k <= 6; ++k) {
+        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 1e-9) << k;
+        EXPECT_LT(angleError(f.edges[k - 1], h, k), 3.0 * kDeg) << k;
+    }
+}
+
+TEST(SpiralSearch, LinesPartlyHiddenByTheColumnAloneMakeNoSpiral) {
+    const Helix h = closeViewHelix();
+    // Two levels under the strict bounds are no established helix: the three looser lines on it
+    // must not complete one.
+    EXPECT_TRUE(findSpirals(closeViewLines(h, 2), {}, paramsFor(h)).empty());
+    std::vector<LineSegment> hidden;
+    for (int k = 1; k <= 6; ++k) hidden.push_back(outerPartOf(h, h.angleOf(k), h.zOf(k), 0.6));
+    EXPECT_TRUE(findSpirals(hidden, {}, paramsFor(h)).empty());
 }
 
 TEST(SpiralSearch, NoSpiralInStraightFlightsOrUnorderedRadialLines) {
