@@ -270,14 +270,27 @@ std::vector<Radial> settleOnNosings(const SpiralLines& sl, Helix& h, std::vector
 }
 
 /// The line as an extra level's edge around `axis` (looser than asRadial: its inner part may be
-/// hidden by the column), its outer end near the helix's outer radius `outer`.
+/// hidden by the column), its outer end at the rim, `outer` [m] from the axis.
 bool asExtraRadial(const SpiralLines& sl, int index, const Eigen::Vector2d& axis, double outer,
                    const SpiralSearchParams& p, Radial& out) {
     SpiralSearchParams loose = p;
     loose.max_axis_offset_m = p.extra_max_axis_offset_m;
     loose.max_column_radius_m = std::max(p.max_column_radius_m, p.extra_max_inner_share * outer);
-    loose.min_outer_radius_m = std::max(p.min_outer_radius_m, p.extra_min_outer_share * outer);
-    return asRadial(sl, index, axis, loose, out);
+    return asRadial(sl, index, axis, loose, out) &&
+           std::abs(out.far - outer) <= p.extra_outer_tolerance_m;
+}
+
+/// True when the held levels' inner ends stop at one column (within extra_max_inner_spread_m)
+/// and their farthest outer end, the rim, is `outer` [m] from the axis.
+bool showsColumnAndRim(const std::vector<std::pair<int, Radial>>& levels,
+                       const SpiralSearchParams& p, double& outer) {
+    double lo = 1e9, hi = 0.0;
+    outer = 0.0;
+    for (const auto& [k, r] : levels) {
+        lo = std::min(lo, r.near), hi = std::max(hi, r.near);
+        outer = std::max(outer, r.far);
+    }
+    return hi - lo <= p.extra_max_inner_spread_m;
 }
 
 /// An extra level's candidate line: its level index and how far off its helix it lies [rad].
@@ -287,14 +300,13 @@ struct ExtraLine {
     Radial line;
 };
 
-/// Lines (not yet used or taken, looser bounds: asExtraRadial) on the nosings' helix or the back
-/// edges' one at the height of a level in `levels`' numbering that holds no line yet.
+/// Lines (not yet used or taken, looser bounds: asExtraRadial, reaching the rim `outer`) on the
+/// nosings' helix or the back edges' one at the height of a level in `levels`' numbering that
+/// holds no line yet.
 std::vector<ExtraLine> extraCandidates(const SpiralLines& sl, const Helix& h,
                                        const std::vector<std::pair<int, Radial>>& levels, double rise,
-                                       const std::vector<char>& skip, const SpiralSearchParams& p) {
-    std::vector<double> outers;
-    for (const auto& [k, r] : levels) outers.push_back(r.far);
-    const double outer = upperMedian(outers);
+                                       double outer, const std::vector<char>& skip,
+                                       const SpiralSearchParams& p) {
     const double step = h.omega * rise;
     const double tol = std::min(p.angle_tolerance_deg * kDeg, kMaxShareOfStep * std::abs(step));
     const auto& [ref_k, ref] = levels.front();
@@ -329,13 +341,15 @@ std::vector<Radial> withExtraLevels(const SpiralLines& sl, const Helix& h, std::
     // Where the strict lines hold a spiral of their own, its levels and rise stand (filling
     // them too changed rise/run on dev/dev2 both ways, no recall gained).
     const int held = static_cast<int>(levels.size());
+    double outer = 0.0;
     if (held < p.min_strict_levels || held >= p.min_seen_levels) return in;
+    if (!showsColumnAndRim(levels, p, outer)) return in;
     std::vector<char> skip = used;
     for (const Radial& r : in) skip[r.index] = 1;
     const auto byOff = [](const ExtraLine& a, const ExtraLine& b) { return a.off < b.off; };
     for (bool added = true; added;) {
         added = false;
-        auto cand = extraCandidates(sl, h, levels, rise, skip, p);
+        auto cand = extraCandidates(sl, h, levels, rise, outer, skip, p);
         std::sort(cand.begin(), cand.end(), byOff);
         for (const ExtraLine& c : cand) {
             const int lo = levels.front().first, hi = levels.back().first;

@@ -57,7 +57,12 @@ struct SpiralSearchParams {
     int min_strict_levels = 3;
     double extra_max_axis_offset_m = 0.12;  ///< [m] an extra level's line passes this close to the axis
     double extra_max_inner_share = 0.8;     ///< [-] its inner end at most this share of the outer radius
-    double extra_min_outer_share = 0.8;     ///< [-] its outer end at least this share of the outer radius
+    /// [m] its outer end this close to the held levels' farthest one (it reaches the outer rim)
+    double extra_outer_tolerance_m = 0.10;
+    /// [m] the held levels' inner ends lie within this of each other (they stop at one column):
+    /// without it, radial-looking lines of straight flights on an accumulated submap
+    /// (tests/pipeline/TwoFloorDrive) were filled up to a spiral
+    double extra_max_inner_spread_m = 0.15;
 };
 
 /// A found spiral: its nosings from the lowest up (z real, put-back levels have num_points 0).
