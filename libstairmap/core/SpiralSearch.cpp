@@ -70,6 +70,8 @@ std::vector<Radial> collectInliers(const SpiralLines& sl, const Helix& h, double
     return in;
 }
 
+bool fitAngleRate(const std::vector<Radial>& in, Helix& h);
+
 /// Least-squares axis (the point nearest to all inlier lines) and helix rate through it.
 bool refitHelix(const SpiralLines& sl, const std::vector<Radial>& in, Helix& h) {
     Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
@@ -82,7 +84,11 @@ bool refitHelix(const SpiralLines& sl, const std::vector<Radial>& in, Helix& h) 
     }
     if (std::abs(a.determinant()) < 1e-6) return false;
     h.axis = a.ldlt().solve(b);
-    // Unwrap each angle against the old helix, then fit phi = phi0 + omega (z - z0).
+    return fitAngleRate(in, h);
+}
+
+/// Unwraps each line's angle against the helix `h`, then fits phi = phi0 + omega (z - z0).
+bool fitAngleRate(const std::vector<Radial>& in, Helix& h) {
     double sz = 0, sp = 0, szz = 0, szp = 0;
     const double n = static_cast<double>(in.size());
     for (const Radial& r : in) {
@@ -473,6 +479,177 @@ SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
     return best;
 }
 
+
+// ---- Spirals seen by their treads' outer rims -------------------------------------------------
+// A tread's outer edge is an arc of radius R from its nosing's angle to the next one's; seen as a
+// line it is the chord, whose foot (the point nearest the axis) lies half a step angle ahead of
+// the nosing in the ascent's sense, R cos(step / 2) from the axis. The feet make a helix.
+
+/// The line as a rim chord around `axis`: Radial with phi the foot's angle, far its distance.
+bool asRim(const SpiralLines& sl, int index, const Eigen::Vector2d& axis, double max_half_chord,
+           const SpiralSearchParams& p, Radial& out) {
+    const LineSegment& l = sl[index];
+    const Eigen::Vector2d d = l.direction();
+    const Eigen::Vector2d foot = l.start + (axis - l.start).dot(d) * d;
+    out.far = (foot - axis).norm();
+    if (out.far < p.min_outer_radius_m || out.far > p.max_rim_distance_m) return false;
+    const double reach = std::max(std::abs((l.start - foot).dot(d)), std::abs((l.end - foot).dot(d)));
+    if (reach > max_half_chord + p.rim_chord_tolerance_m) return false;  // not on the chord
+    const Eigen::Vector2d u = (foot - axis) / out.far;
+    out.phi = std::atan2(u.y(), u.x());
+    out.near = 0.0;
+    out.index = index;
+    out.z = l.z;
+    out.rot = 0.0;
+    return true;
+}
+
+/// Half a chord of `step` [rad] at distance `dist` from the axis.
+double halfChord(double dist, double step) { return dist * std::tan(0.5 * std::abs(step)); }
+
+/// Rim chords at the common distance `dist` whose feet lie on the helix.
+std::vector<Radial> collectRims(const SpiralLines& sl, const Helix& h, double dist, double max_step,
+                                const SpiralSearchParams& p) {
+    std::vector<Radial> in;
+    Radial r;
+    for (int k = 0; k < static_cast<int>(sl.size()); ++k) {
+        if (!asRim(sl, k, h.axis, halfChord(dist, max_step), p, r)) continue;
+        if (std::abs(r.far - dist) > p.rim_distance_tolerance_m) continue;
+        const double predicted = h.phi0 + h.omega * (r.z - h.z0);
+        if (std::abs(wrapAngle(r.phi - predicted)) <= p.angle_tolerance_deg * kDeg) in.push_back(r);
+    }
+    return in;
+}
+
+/// Axis and common distance fitted to the chords: each line's signed distance from the axis,
+/// n.a - rho, is s R with s its current side (three unknowns, linear). False when degenerate.
+bool refitRimAxis(const SpiralLines& sl, const std::vector<Radial>& in, Helix& h, double& dist) {
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    for (const Radial& r : in) {
+        const LineSegment& l = sl[r.index];
+        const Eigen::Vector2d n(std::cos(l.theta), std::sin(l.theta));
+        const double side = n.dot(h.axis) - l.rho < 0 ? -1.0 : 1.0;
+        const Eigen::Vector3d row(n.x(), n.y(), -side);
+        a += row * row.transpose();
+        b += row * l.rho;
+    }
+    if (std::abs(a.determinant()) < 1e-6) return false;
+    const Eigen::Vector3d x = a.ldlt().solve(b);
+    h.axis = x.head<2>();
+    dist = x.z();
+    return dist > 0.0;
+}
+
+/// Axis candidate of a pair of lines as rim chords: the intersection of their normals through
+/// their centres, both chords about equally far from it.
+bool rimPairHelix(const SpiralLines& sl, int i, int j, const SpiralSearchParams& p, Helix& h,
+                  double& dist) {
+    const LineSegment& a = sl[i];
+    const LineSegment& b = sl[j];
+    const Eigen::Vector2d na(std::cos(a.theta), std::sin(a.theta)), nb(std::cos(b.theta), std::sin(b.theta));
+    const double cross = na.x() * nb.y() - na.y() * nb.x();
+    if (std::abs(cross) < std::sin(0.5 * p.min_step_angle_deg * kDeg)) return false;  // parallel
+    const Eigen::Vector2d w = b.centre() - a.centre();
+    h.axis = a.centre() + (w.x() * nb.y() - w.y() * nb.x()) / cross * na;
+    Radial ra, rb;
+    const double max_step = p.max_step_angle_deg * kDeg;
+    const double dist_a = std::abs(a.distanceTo(h.axis)), dist_b = std::abs(b.distanceTo(h.axis));
+    if (!asRim(sl, i, h.axis, halfChord(dist_a, max_step), p, ra) ||
+        !asRim(sl, j, h.axis, halfChord(dist_b, max_step), p, rb))
+        return false;
+    if (std::abs(ra.far - rb.far) > 2.0 * p.rim_distance_tolerance_m) return false;
+    dist = 0.5 * (ra.far + rb.far);
+    h.z0 = ra.z;
+    h.phi0 = ra.phi;
+    h.omega = wrapAngle(rb.phi - ra.phi) / (rb.z - ra.z);
+    return std::abs(h.omega) * p.min_rise_m >= p.min_step_angle_deg * kDeg * 0.5;
+}
+
+/// The spiral whose rims the pair (i, j) may be, with the lines it uses (empty edges when none).
+SpiralFlight rimSpiralOfPair(const SpiralLines& sl, int i, int j, const std::vector<char>& used,
+                             const SpiralSearchParams& p, std::vector<Radial>& in) {
+    Helix h;
+    double dist = 0.0;
+    if (!rimPairHelix(sl, i, j, p, h, dist)) return {};
+    const double max_step = p.max_step_angle_deg * kDeg;
+    in = collectRims(sl, h, dist, max_step, p);
+    if (in.size() < 3 || !refitRimAxis(sl, in, h, dist) || !fitAngleRate(in, h)) return {};
+    in = collectRims(sl, h, dist, max_step, p);
+    in.erase(std::remove_if(in.begin(), in.end(), [&](const Radial& r) { return used[r.index]; }),
+             in.end());
+    double rise = 0.0;
+    const auto idx = indexLevels(levelsOf(in, p.height_tolerance_m), p, rise);
+    SpiralFlight f;
+    if (static_cast<int>(idx.size()) < p.min_seen_levels) return f;
+    const int levels = idx.back().first - idx.front().first + 1;
+    const double first_z = idx.front().second.z - p.floor_z;
+    if (levels < p.min_steps || rise < p.min_rise_m || rise > p.max_rise_m) return f;
+    if (first_z < p.min_first_height_m || first_z > p.max_first_height_m) return f;
+    const double step = h.omega * rise;  // signed: the ascent's sense
+    if (std::abs(step) < p.min_step_angle_deg * kDeg || std::abs(step) > p.max_step_angle_deg * kDeg)
+        return f;
+    Radial check;
+    for (const auto& [k, r] : idx)  // each seen line within its chord at this step angle
+        if (!asRim(sl, r.index, h.axis, halfChord(dist, step), p, check)) return f;
+    const double outer = dist / std::cos(0.5 * step);
+    const double inner = p.rim_column_radius_m;
+    const double run = (inner + outer) * std::sin(0.5 * std::abs(step));
+    if (run < p.min_run_m || run > p.max_run_m) return f;
+    // Nosings half a step behind their rims' feet, from the assumed column to the rim; levels
+    // between two seen ones on the helix.
+    const auto nosingAt = [&](double phi, double z, int points) {
+        LineSegment l = unseenRadialNosing(h.axis, phi - 0.5 * step, inner, outer, z);
+        l.num_points = points;
+        return l;
+    };
+    for (std::size_t n = 0; n < idx.size(); ++n) {
+        const auto& [kb, b] = idx[n];
+        if (n > 0) {
+            const auto& [ka, a] = idx[n - 1];
+            const double dphi = wrapAngle(b.phi - a.phi);
+            for (int k = ka + 1; k < kb; ++k) {
+                const double t = static_cast<double>(k - ka) / (kb - ka);
+                f.edges.push_back(nosingAt(a.phi + t * dphi, a.z + t * (b.z - a.z), 0));
+            }
+        }
+        f.edges.push_back(nosingAt(b.phi, b.z, sl[b.index].num_points));
+    }
+    f.axis = h.axis;
+    f.outer_radius_m = outer;
+    f.inner_radius_m = inner;
+    f.step_angle_rad = std::abs(step);
+    f.run_m = run;
+    f.seen_levels = static_cast<int>(idx.size());
+    return f;
+}
+
+/// Best rim-seen spiral among the lines not yet used (empty edges when none).
+SpiralFlight bestRimSpiral(const SpiralLines& sl, const std::vector<char>& used,
+                           const SpiralSearchParams& p, std::vector<int>& inliers) {
+    SpiralFlight best;
+    const int n = static_cast<int>(sl.size());
+    std::vector<char> explored(n, 0);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double dz = sl[j].z - sl[i].z;
+            if (used[i] || used[j] || (explored[i] && explored[j])) continue;
+            if (dz < p.min_rise_m - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
+            std::vector<Radial> in;
+            SpiralFlight f = rimSpiralOfPair(sl, i, j, used, p, in);
+            if (f.edges.empty()) continue;
+            for (const Radial& r : in) explored[r.index] = 1;  // their other pairs: the same axis
+            if (std::make_tuple(f.edges.size(), f.seen_levels, in.size()) >
+                std::make_tuple(best.edges.size(), best.seen_levels, inliers.size())) {
+                best = std::move(f);
+                inliers.clear();
+                for (const Radial& r : in) inliers.push_back(r.index);
+            }
+        }
+    }
+    return best;
+}
+
 }  // namespace
 
 std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drops,
@@ -494,6 +671,12 @@ std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drop
         });
         if (same == out.end()) out.push_back(std::move(f));
         else if (f.edges.size() > same->edges.size()) *same = std::move(f);
+    }
+    // Rim views: only where the radial search found nothing (their lines are no nosings).
+    if (params.rim_search && out.empty()) {
+        std::vector<int> inliers;
+        SpiralFlight f = bestRimSpiral(sl, used, params, inliers);
+        if (!f.edges.empty()) out.push_back(std::move(f));
     }
     return out;
 }

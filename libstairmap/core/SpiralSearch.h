@@ -22,6 +22,12 @@
 // min_seen_levels (a close view: the column hides the inner part of the lower nosings) has its
 // empty levels next to or between them filled by lines under looser bounds that lie on its helix's
 // angle and rise; they never move its axis or helix.
+//
+// Where no nosing helix is found, an elevation map cropped at the spiral may show only the treads'
+// outer rims: each a chord of the outer arc, whose normal through its foot passes through the axis,
+// all chords one distance from it, the feet's angles a helix half a step ahead of the nosings. The
+// axis and that distance are fitted to the chords; the nosings are put half a step behind, from an
+// assumed column (rim_column_radius_m) to the rim.
 
 #include <vector>
 
@@ -63,6 +69,15 @@ struct SpiralSearchParams {
     /// without it, radial-looking lines of straight flights on an accumulated submap
     /// (tests/pipeline/TwoFloorDrive) were filled up to a spiral
     double extra_max_inner_spread_m = 0.15;
+    /// Spirals seen by their treads' outer rims (an elevation map cropped at the spiral): chords
+    /// whose normals pass through the axis, all one distance from it.
+    bool rim_search = true;
+    double max_rim_distance_m = 2.0;       ///< [m] farthest rim chord from the axis
+    double rim_distance_tolerance_m = 0.05; ///< [m] a chord's distance off the common one
+    double rim_chord_tolerance_m = 0.10;   ///< [m] a line may reach this far past its chord's ends
+    /// [m] column radius assumed for the nosings of a spiral seen only by its rims (unseen; dev
+    /// and dev2 columns are 0.06-0.30 m)
+    double rim_column_radius_m = 0.15;
 };
 
 /// A found spiral: its nosings from the lowest up (z real, put-back levels have num_points 0).

@@ -195,6 +195,48 @@ TEST(SpiralSearch, LinesPartlyHiddenByTheColumnAloneMakeNoSpiral) {
     EXPECT_TRUE(findSpirals(hidden, {}, paramsFor(h)).empty());
 }
 
+/// Tread k's outer rim seen as a line (an elevation map cropped at the spiral): the chord of the
+/// outer arc from nosing k's angle to nosing k+1's.
+LineSegment rimChord(const Helix& h, int k) {
+    const Eigen::Vector2d a = h.axis + h.outer * Eigen::Vector2d(std::cos(h.angleOf(k)), std::sin(h.angleOf(k)));
+    const Eigen::Vector2d b =
+        h.axis + h.outer * Eigen::Vector2d(std::cos(h.angleOf(k + 1)), std::sin(h.angleOf(k + 1)));
+    LineSegment l = radialLine(h, h.angleOf(k), h.zOf(k));
+    l.start = a;
+    l.end = b;
+    const Eigen::Vector2d d = (b - a).normalized();
+    Eigen::Vector2d n(d.y(), -d.x());
+    if (n.dot(l.start) < 0) n = -n;
+    l.rho = n.dot(l.start);
+    l.theta = std::atan2(n.y(), n.x());
+    return l;
+}
+
+TEST(SpiralSearch, FindsASpiralSeenOnlyByItsTreadsOuterRims) {
+    Helix h;  // dev r0034: 23 deg per step, rims 1.04 m from the axis
+    h.inner = 0.15;
+    h.outer = 1.04;
+    h.rise = 0.2;
+    h.step = -23.0 * kDeg;
+    std::vector<LineSegment> lines;
+    for (int k = 1; k <= 5; ++k) lines.push_back(rimChord(h, k));
+    const auto spirals = findSpirals(lines, {}, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 5u);
+    EXPECT_LT((f.axis - h.axis).norm(), 0.01);
+    EXPECT_NEAR(f.outer_radius_m, h.outer, 0.01);
+    EXPECT_NEAR(f.step_angle_rad, std::abs(h.step), 0.5 * kDeg);
+    for (int k = 1; k <= 5; ++k) {
+        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 1e-9) << k;
+        EXPECT_LT(angleError(f.edges[k - 1], h, k), 1.0 * kDeg) << k;
+        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.02) << k;
+    }
+    // Four rims are too few, as four nosings are (min_seen_levels).
+    lines.pop_back();
+    EXPECT_TRUE(findSpirals(lines, {}, paramsFor(h)).empty());
+}
+
 TEST(SpiralSearch, NoSpiralInStraightFlightsOrUnorderedRadialLines) {
     const Helix h;
     const SpiralSearchParams p = paramsFor(h);
