@@ -516,7 +516,7 @@ std::vector<Radial> collectRims(const SpiralLines& sl, const Helix& h, double di
         if (!asRim(sl, k, h.axis, halfChord(dist, max_step), p, r)) continue;
         if (std::abs(r.far - dist) > p.rim_distance_tolerance_m) continue;
         const double predicted = h.phi0 + h.omega * (r.z - h.z0);
-        if (std::abs(wrapAngle(r.phi - predicted)) <= p.angle_tolerance_deg * kDeg) in.push_back(r);
+        if (std::abs(wrapAngle(r.phi - predicted)) <= p.rim_angle_tolerance_deg * kDeg) in.push_back(r);
     }
     return in;
 }

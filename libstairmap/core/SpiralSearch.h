@@ -75,6 +75,10 @@ struct SpiralSearchParams {
     double max_rim_distance_m = 2.0;       ///< [m] farthest rim chord from the axis
     double rim_distance_tolerance_m = 0.05; ///< [m] a chord's distance off the common one
     double rim_chord_tolerance_m = 0.10;   ///< [m] a line may reach this far past its chord's ends
+    /// [deg] a rim's foot off the helix: a partly seen arc's line has its foot at the seen part's
+    /// middle, anywhere within the tread's step angle (9 deg missed dev r0189, 15 deg raised dev2
+    /// width MAE with no gain)
+    double rim_angle_tolerance_deg = 12.0;
     /// [m] column radius assumed for the nosings of a spiral seen only by its rims (unseen; dev
     /// and dev2 columns are 0.06-0.30 m)
     double rim_column_radius_m = 0.15;
