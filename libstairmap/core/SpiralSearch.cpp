@@ -415,6 +415,15 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
     return f;
 }
 
+/// The helix through two lines' angles around h.axis (phi0 and z0 at `ra`), if it turns fast
+/// enough to be a spiral's (half the minimum step angle per minimum rise).
+bool helixThrough(const Radial& ra, const Radial& rb, const SpiralSearchParams& p, Helix& h) {
+    h.z0 = ra.z;
+    h.phi0 = ra.phi;
+    h.omega = wrapAngle(rb.phi - ra.phi) / (rb.z - ra.z);
+    return std::abs(h.omega) * p.min_rise_m >= p.min_step_angle_deg * kDeg * 0.5;
+}
+
 /// Axis candidate of a pair of lines: their intersection, when both are radial about it.
 bool pairHelix(const SpiralLines& sl, int i, int j, const SpiralSearchParams& p, Helix& h) {
     const LineSegment& a = sl[i];
@@ -427,10 +436,7 @@ bool pairHelix(const SpiralLines& sl, int i, int j, const SpiralSearchParams& p,
     h.axis = a.start + t * da;
     Radial ra, rb;
     if (!asRadial(sl, i, h.axis, p, ra) || !asRadial(sl, j, h.axis, p, rb)) return false;
-    h.z0 = ra.z;
-    h.phi0 = ra.phi;
-    h.omega = wrapAngle(rb.phi - ra.phi) / (rb.z - ra.z);
-    return std::abs(h.omega) * p.min_rise_m >= p.min_step_angle_deg * kDeg * 0.5;
+    return helixThrough(ra, rb, p, h);
 }
 
 /// The spiral through the pair (i, j), with the lines it uses (empty edges when none).
@@ -448,9 +454,12 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
     return buildFlight(sl, h, in, p);
 }
 
-/// Best spiral among the lines not yet used (empty edges when none).
-SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
-                        const SpiralSearchParams& p, std::vector<int>& inliers) {
+/// Best spiral among the lines not yet used (empty edges when none), trying every pair of lines one
+/// to two rises apart with `ofPair(i, j, in)` (it returns the spiral through the pair and the lines
+/// it uses).
+template <typename OfPair>
+SpiralFlight bestOfPairs(const SpiralLines& sl, const std::vector<char>& used,
+                         const SpiralSearchParams& p, std::vector<int>& inliers, OfPair&& ofPair) {
     SpiralFlight best;
     const int n = static_cast<int>(sl.size());
     std::vector<char> explored(n, 0);
@@ -460,7 +469,7 @@ SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
             if (used[i] || used[j] || (explored[i] && explored[j])) continue;
             if (dz < p.min_rise_m - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
             std::vector<Radial> in;
-            SpiralFlight f = spiralOfPair(sl, i, j, used, p, in);
+            SpiralFlight f = ofPair(i, j, in);
             if (f.edges.empty()) continue;
             for (const Radial& r : in) explored[r.index] = 1;  // their other pairs: the same axis
             // More levels, then more seen ones, then more lines on the helices: a helix through
@@ -479,6 +488,13 @@ SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
     return best;
 }
 
+/// Best spiral of radial nosings among the lines not yet used (empty edges when none).
+SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
+                        const SpiralSearchParams& p, std::vector<int>& inliers) {
+    return bestOfPairs(sl, used, p, inliers, [&](int i, int j, std::vector<Radial>& in) {
+        return spiralOfPair(sl, i, j, used, p, in);
+    });
+}
 
 // ---- Spirals seen by their treads' outer rims -------------------------------------------------
 // A tread's outer edge is an arc of radius R from its nosing's angle to the next one's; seen as a
@@ -560,10 +576,7 @@ bool rimPairHelix(const SpiralLines& sl, int i, int j, const SpiralSearchParams&
         return false;
     if (std::abs(ra.far - rb.far) > 2.0 * p.rim_distance_tolerance_m) return false;
     dist = 0.5 * (ra.far + rb.far);
-    h.z0 = ra.z;
-    h.phi0 = ra.phi;
-    h.omega = wrapAngle(rb.phi - ra.phi) / (rb.z - ra.z);
-    return std::abs(h.omega) * p.min_rise_m >= p.min_step_angle_deg * kDeg * 0.5;
+    return helixThrough(ra, rb, p, h);
 }
 
 /// The spiral whose rims the pair (i, j) may be, with the lines it uses (empty edges when none).
@@ -627,27 +640,9 @@ SpiralFlight rimSpiralOfPair(const SpiralLines& sl, int i, int j, const std::vec
 /// Best rim-seen spiral among the lines not yet used (empty edges when none).
 SpiralFlight bestRimSpiral(const SpiralLines& sl, const std::vector<char>& used,
                            const SpiralSearchParams& p, std::vector<int>& inliers) {
-    SpiralFlight best;
-    const int n = static_cast<int>(sl.size());
-    std::vector<char> explored(n, 0);
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            const double dz = sl[j].z - sl[i].z;
-            if (used[i] || used[j] || (explored[i] && explored[j])) continue;
-            if (dz < p.min_rise_m - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
-            std::vector<Radial> in;
-            SpiralFlight f = rimSpiralOfPair(sl, i, j, used, p, in);
-            if (f.edges.empty()) continue;
-            for (const Radial& r : in) explored[r.index] = 1;  // their other pairs: the same axis
-            if (std::make_tuple(f.edges.size(), f.seen_levels, in.size()) >
-                std::make_tuple(best.edges.size(), best.seen_levels, inliers.size())) {
-                best = std::move(f);
-                inliers.clear();
-                for (const Radial& r : in) inliers.push_back(r.index);
-            }
-        }
-    }
-    return best;
+    return bestOfPairs(sl, used, p, inliers, [&](int i, int j, std::vector<Radial>& in) {
+        return rimSpiralOfPair(sl, i, j, used, p, in);
+    });
 }
 
 }  // namespace
