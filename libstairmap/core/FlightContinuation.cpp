@@ -20,9 +20,7 @@ ChainStep chainStep(const std::vector<LineSegment>& edges) {
     const LineSegment& last = edges.back();
     const double n = static_cast<double>(edges.size() - 1);
     c.rise = (last.z - first.z) / n;
-    const Eigen::Vector2d d = last.direction();
-    c.up = Eigen::Vector2d(d.y(), -d.x());
-    if (c.up.dot(last.centre() - first.centre()) < 0) c.up = -c.up;
+    c.up = last.normalAwayFrom(first.centre());
     c.run = c.up.dot(last.centre() - first.centre()) / n;
     return c;
 }

@@ -20,6 +20,13 @@ struct LineSegment {
     Eigen::Vector2d centre() const { return 0.5 * (start + end); }
     /// Unit direction along the line (perpendicular to the normal).
     Eigen::Vector2d direction() const { return {-std::sin(theta), std::cos(theta)}; }
+    /// Unit XY normal pointing away from `p` (from p's side of the line towards the line; a point
+    /// on the line gets either): up a flight, from a lower edge to this one.
+    Eigen::Vector2d normalAwayFrom(const Eigen::Vector2d& p) const {
+        const Eigen::Vector2d d = direction();
+        const Eigen::Vector2d n(d.y(), -d.x());
+        return n.dot(centre() - p) < 0 ? Eigen::Vector2d(-n) : n;
+    }
     /// Signed XY distance of a point to the infinite line.
     double distanceTo(const Eigen::Vector2d& p) const {
         return p.x() * std::cos(theta) + p.y() * std::sin(theta) - rho;

@@ -6,18 +6,10 @@
 namespace stairmap {
 namespace {
 
-/// Unit XY normal of `e` pointing from `from` towards e.
-Eigen::Vector2d normalTowards(const LineSegment& e, const Eigen::Vector2d& from) {
-    const Eigen::Vector2d d = e.direction();
-    Eigen::Vector2d n(d.y(), -d.x());
-    if (n.dot(e.centre() - from) < 0) n = -n;
-    return n;
-}
-
 /// Whether the tread between `lower` and `upper` is seen level (treadsSeenLevel, one tread).
 bool treadSeenLevel(const PointCloud& cloud, const LineSegment& lower, const LineSegment& upper,
                     const LevelTreadParams& p) {
-    const Eigen::Vector2d up = normalTowards(upper, lower.centre());
+    const Eigen::Vector2d up = upper.normalAwayFrom(lower.centre());
     const double run = up.dot(upper.centre() - lower.centre());
     if (run <= 0.0) return false;
     const Eigen::Vector2d c = lower.centre();
@@ -58,7 +50,7 @@ bool treadsSeenLevel(const PointCloud& cloud, const std::vector<LineSegment>& ed
 double meanRun(const std::vector<LineSegment>& edges) {
     const LineSegment& first = edges.front();
     const LineSegment& last = edges.back();
-    const Eigen::Vector2d up = normalTowards(last, first.centre());
+    const Eigen::Vector2d up = last.normalAwayFrom(first.centre());
     return up.dot(last.centre() - first.centre()) / static_cast<double>(edges.size() - 1);
 }
 

@@ -217,14 +217,20 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
     raiseLowEdges(edges, kRiserHitMinDrop);
 }
 
+/// The continuation tests' parameters, their rise floor condition 1's.
+FlightContinuationParams continuationParams(const DetectorParams& p) {
+    FlightContinuationParams cp;
+    cp.min_rise_m = p.min_step_height_m;
+    return cp;
+}
+
 /// A chain one edge short of min_steps (ascending, real z, corrected): the foot of a longer flight
 /// when the cloud shows the tread above its last edge (the next nosing is added) or below a first
 /// edge two rises up (the previous one is added), or a flight from a raised landing
 /// (FlightContinuation); else it may be a stage. Returns whether `edges` now count as a flight.
 bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorParams& p,
                         std::vector<LineSegment>& edges) {
-    FlightContinuationParams cp;
-    cp.min_rise_m = p.min_step_height_m;
+    const FlightContinuationParams cp = continuationParams(p);
     if (treadAboveLastEdge(cloud, edges, cp)) {
         edges.push_back(nextNosing(edges));
         return true;
@@ -239,9 +245,8 @@ bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorP
 /// Whether a short chain can be continued at all: none put back in between, a regular straight
 /// flight (the point-free test, before any pass over the cloud).
 bool mayContinue(const std::vector<LineSegment>& edges, const DetectorParams& p) {
-    FlightContinuationParams cp;
-    cp.min_rise_m = p.min_step_height_m;
-    return static_cast<int>(edges.size()) == p.min_steps - 1 && isRegularStraightChain(edges, cp);
+    return static_cast<int>(edges.size()) == p.min_steps - 1 &&
+           isRegularStraightChain(edges, continuationParams(p));
 }
 
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
@@ -351,12 +356,10 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         // also when its treads are min_deep_tread_m deep and nothing is seen one step beyond its
         // last edge (the real ANYmal entrance from its landing: the top tread's far part is
         // unmapped), where a stage's platform would be seen.
-        FlightContinuationParams cp;
-        cp.min_rise_m = p.min_step_height_m;
         continueRefused(rest, deep_refused, deep_ties, [&](std::vector<LineSegment>& edges) {
             if (beyondBound(edges) && continued(edges)) return true;
             return isDeepLevel(edges, p.min_deep_tread_m, seen_densely) &&
-                   unseenBeyondLastEdge(cloud, edges, cp);
+                   unseenBeyondLastEdge(cloud, edges, continuationParams(p));
         });
     }
     if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);

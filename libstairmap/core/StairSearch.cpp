@@ -221,7 +221,9 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
             if (c.steps.size() > best.steps.size()) {
                 best = c;
                 if (ties) ties->clear();
-            } else if (ties && c.steps.size() == best.steps.size() && c.steps != best.steps) {
+            } else if (ties && c.steps.size() == best.steps.size() &&
+                       static_cast<int>(c.steps.size()) < p.min_steps && c.steps != best.steps) {
+                // Only a refused chain's rivals are ever used: no copies for accepted lengths.
                 ties->push_back(c);
             }
         }

@@ -35,8 +35,9 @@ PointCloud entranceCloud(double cell_m, int column) {
     if (!image.loadFromFile(path, 0)) throw std::runtime_error("cannot read " + path);
     const double floor = image.at<uint8_t>(column, kRobotRow) * kGreyToMetres;
     PointCloud cloud;
-    for (int r = 0; r < image.getHeight(); ++r) {
-        for (int c = 0; c < image.getWidth(); ++c) {
+    const int rows = static_cast<int>(image.getHeight()), columns = static_cast<int>(image.getWidth());
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < columns; ++c) {
             const uint8_t grey = image.at<uint8_t>(c, r);
             if (grey == 0) continue;
             cloud.emplace_back(float((column - c) * cell_m), float((kRobotRow - r) * cell_m),

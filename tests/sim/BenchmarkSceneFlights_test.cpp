@@ -39,7 +39,9 @@ TEST_P(MissedBefore, IsReportedOnceWithItsRiseAndRun) {
         EXPECT_NEAR(s.step_depth, truth.run_m, c.run_tolerance_m);
     }
     EXPECT_EQ(on_truth, 1) << result.staircases.size() << " staircases in the cloud";
-    if (c.alone) EXPECT_EQ(result.staircases.size(), 1u);
+    if (c.alone) {
+        EXPECT_EQ(result.staircases.size(), 1u);
+    }
 }
 
 // Three rises seen above a tread or landing one rise above the robot's floor: the upper part of a
