@@ -203,15 +203,96 @@ struct SideVotes {
     }
 };
 
-/// Sets the edge to the measured extent (never shorter) and votes on its sides.
-void applyScan(const TreadScan& t, const StepExtentParams& p, StairEdge& e, SideVotes& left,
-               SideVotes& right) {
-    const int lo = walkTread(t, t.edge_lo, -1, p), hi = walkTread(t, t.edge_hi, +1, p);
-    left.add(sideBeyond(t, lo, -1, p));
-    right.add(sideBeyond(t, hi, +1, p));
+/// The tread's measured extent (bins) and what bounds it on either side.
+struct Extent {
+    int lo = 0, hi = 0;
+    StairSide left = StairSide::Unseen, right = StairSide::Unseen;
+};
+
+Extent measure(const TreadScan& t, const StepExtentParams& p) {
+    Extent x;
+    x.lo = walkTread(t, t.edge_lo, -1, p);
+    x.hi = walkTread(t, t.edge_hi, +1, p);
+    x.left = sideBeyond(t, x.lo, -1, p);
+    x.right = sideBeyond(t, x.hi, +1, p);
+    return x;
+}
+
+/// Sets the edge to the measured extent (never shorter).
+void applyExtent(const TreadScan& t, const Extent& x, const StepExtentParams& p, StairEdge& e) {
     const Eigen::Vector3d c = e.centre(), u(t.u.x(), t.u.y(), 0.0);
-    if (lo < t.edge_lo) e.start = c + (t.t0 + lo * p.bin_m) * u;
-    if (hi > t.edge_hi) e.end = c + (t.t0 + (hi + 1) * p.bin_m) * u;
+    if (x.lo < t.edge_lo) e.start = c + (t.t0 + x.lo * p.bin_m) * u;
+    if (x.hi > t.edge_hi) e.end = c + (t.t0 + (x.hi + 1) * p.bin_m) * u;
+}
+
+/// Across the flight: lateral positions in one frame for all steps (the steps' own edge
+/// directions differ by the fits' noise).
+struct AcrossFlight {
+    Eigen::Vector2d v, o;
+    double at(const TreadScan& t, double bin_pos, double bin_m) const {
+        return v.dot(t.c + (t.t0 + bin_pos * bin_m) * t.u - o);
+    }
+};
+
+/// Side `dir` (-1 left, +1 right) seen unseen on the steps: where a wall or railing is seen
+/// beyond the hole on enough of them at one place across the flight (robust: the median), the
+/// position of the flight's side there; NaN if none.
+double boundAcrossHole(const std::vector<TreadScan>& scans, const std::vector<Extent>& ext, int dir,
+                       const AcrossFlight& across, const StepExtentParams& p) {
+    const int max_bins = static_cast<int>(p.max_bridge_m / p.bin_m);
+    std::vector<double> at;
+    int unseen = 0;
+    for (std::size_t k = 0; k < scans.size(); ++k) {
+        if ((dir < 0 ? ext[k].left : ext[k].right) != StairSide::Unseen) continue;
+        ++unseen;
+        const TreadScan& t = scans[k];
+        const int end = dir < 0 ? ext[k].lo : ext[k].hi;
+        for (int i = end + dir, n = 0; i >= 0 && i < static_cast<int>(t.bins.size()) && n < max_bins;
+             i += dir, ++n) {
+            if (t.bins[i] & kBelow) break;  // a drop: no wall bounds the tread here
+            if (t.bins[i] & kAbove) {
+                at.push_back(across.at(t, dir < 0 ? i + 1 : i, p.bin_m));
+                break;
+            }
+        }
+    }
+    if (static_cast<int>(at.size()) < p.min_bridge_steps) return std::nan("");
+    std::nth_element(at.begin(), at.begin() + at.size() / 2, at.end());
+    const double median = at[at.size() / 2];
+    const auto agree = std::count_if(at.begin(), at.end(), [&](double a) { return std::abs(a - median) <= p.bridge_agree_m; });
+    if (agree < p.min_bridge_steps || 2 * agree < unseen) return std::nan("");
+    return median;
+}
+
+/// Lengthens the edge of scan t on side dir to lateral position `bound` (never shortens it).
+void extendTo(const TreadScan& t, int dir, double bound, const AcrossFlight& across, StairEdge& e) {
+    const double along = across.v.dot(t.u);
+    if (std::abs(along) < 0.5) return;  // a step turned far from the flight's line (a spiral)
+    const Eigen::Vector3d c = e.centre(), u(t.u.x(), t.u.y(), 0.0);
+    const double tc = (bound - across.v.dot(c.head<2>() - across.o)) / along;  // along u from c
+    if (dir < 0 && tc < (e.start - c).dot(u)) e.start = c + tc * u;
+    if (dir > 0 && tc > (e.end - c).dot(u)) e.end = c + tc * u;
+}
+
+/// Sides no step saw bounded but a wall or railing beyond a hole bounds (boundAcrossHole): marked
+/// Wall, every step lengthened to it. Returns whether any side was.
+bool boundSidesAcrossHoles(const std::vector<TreadScan>& scans, const std::vector<Extent>& ext,
+                           const StepExtentParams& p, Staircase& stairs) {
+    Eigen::Vector2d v = Eigen::Vector2d::Zero();
+    for (const TreadScan& t : scans) v += t.u;
+    if (scans.empty() || v.norm() < 1e-6) return false;
+    const AcrossFlight across{v.normalized(), scans.front().c};
+    bool any = false;
+    for (int dir : {-1, +1}) {
+        StairSide& side = dir < 0 ? stairs.left_side : stairs.right_side;
+        if (side != StairSide::Unseen) continue;
+        const double bound = boundAcrossHole(scans, ext, dir, across, p);
+        if (std::isnan(bound)) continue;
+        side = StairSide::Wall;
+        any = true;
+        for (const TreadScan& t : scans) extendTo(t, dir, bound, across, stairs.steps[t.step]);
+    }
+    return any;
 }
 
 /// The flight's width from its measured steps' `widths` (the steps of one flight are equally
@@ -255,11 +336,21 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
         if (!(q.x() >= lo.x() && q.x() <= hi.x() && q.y() >= lo.y() && q.y() <= hi.y())) continue;
         along.forEachReaching(q, [&](std::size_t k) { addPoint(scans[k], q, p); });
     }
+    std::vector<Extent> ext;
     SideVotes left, right;
-    for (const TreadScan& t : scans) applyScan(t, p, stairs.steps[t.step], left, right);
+    for (const TreadScan& t : scans) {
+        ext.push_back(measure(t, p));
+        applyExtent(t, ext.back(), p, stairs.steps[t.step]);
+        left.add(ext.back().left);
+        right.add(ext.back().right);
+    }
     stairs.left_side = left.result();
     stairs.right_side = right.result();
+    // Rise, run and heading from the treads as seen: edges lengthened across a hole below would
+    // move their centres sideways, and a fit's small angle error there shifts the run (dev r0275:
+    // run 1.8 -> 4.8 cm off).
     estimateGeometry(stairs);
+    if (boundSidesAcrossHoles(scans, ext, p, stairs)) stairs.location = stairs.steps.front().centre();
     std::vector<double> widths;
     for (const TreadScan& t : scans) widths.push_back(stairs.steps[t.step].length());
     if (widths.size() >= 2) stairs.step_width = flightWidth(widths, stairs);

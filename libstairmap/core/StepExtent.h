@@ -9,6 +9,9 @@
 //  - Wall:   points rising above the tread just beyond its end (a wall, a railing's posts);
 //  - Open:   no such points, but the floor or a drop (points well below the tread) seen there;
 //  - Unseen: no points beyond the end: the view does not cover it, the width may be short.
+// A side unseen on the steps is a wall after all when a wall or railing is seen beyond the hole
+// in line on several steps (the tread between hidden: a LiDAR's blind cone close below it, the
+// nearer steps over a descending flight); the steps then reach it.
 // Edges are lengthened to the measured extent (never shortened), then the geometry re-estimated;
 // the flight's width is its widest step when a side is unseen (every step reads short there), else
 // the upper quartile of its steps' widths.
@@ -39,6 +42,15 @@ struct StepExtentParams {
     /// the same result, 2x fewer instructions on the randomised sets). false offers every point
     /// to every tread: the reference the index is tested equal to.
     bool index_along_flight = true;
+    /// [m] A side no step sees bounded is bounded after all by a wall or railing seen beyond a
+    /// hole up to this wide (the tread between hidden: a LiDAR's blind cone close below it, the
+    /// nearer steps over a descending flight) ...
+    double max_bridge_m = 1.2;
+    /// [-] ... when at least this many steps, and half of those whose side was unseen, see it ...
+    int min_bridge_steps = 3;
+    /// [m] ... at the same place across the flight within this (a wall runs along the flight;
+    /// furniture beside it does not rise above three treads in line).
+    double bridge_agree_m = 0.10;
 };
 
 /// Measures every step of `stairs` (robot frame, as detected) in `cloud` as described above and

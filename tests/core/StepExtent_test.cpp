@@ -171,6 +171,51 @@ TEST(StepExtent, DegenerateEdgesAndNonFinitePointsAreSkipped) {
     EXPECT_EQ(s.right_side, StairSide::Open);
 }
 
+/// Upright points (a wall, a railing's post) at lateral position y beside step k's tread, from
+/// 0.1 m to 1.0 m above it.
+void addUprightBeside(PointCloud& c, int k, double y) {
+    for (double x = nosingX(k) + 0.05; x < nosingX(k + 1) - 0.05; x += 0.02)
+        for (double z = treadZ(k) + 0.1; z < treadZ(k) + 1.0; z += 0.04)
+            c.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+}
+
+TEST(StepExtent, AWallSeenBeyondAHoleOnEveryStepBoundsTheSide) {
+    // Treads seen from y = -0.2 leftwards (a wall on the left); their right parts hidden (a
+    // LiDAR's blind cone, nearer steps), the wall on the right seen beyond the hole.
+    PointCloud cloud = flightCloud(-0.2, true, false);
+    for (int k = 0; k + 1 < kSteps; ++k) addUprightBeside(cloud, k, -kHalfWidth - 0.03);
+    Staircase s = pieces();
+    measureStepExtents(cloud, s);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Wall);
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
+    for (int k = 0; k + 1 < kSteps; ++k) EXPECT_NEAR(s.steps[k].end.y(), -kHalfWidth, 0.05) << "step " << k;
+    // rise and run from the treads as seen, the edges' move sideways changes neither
+    EXPECT_NEAR(s.step_height, kRise, 1e-9);
+    EXPECT_NEAR(s.step_depth, kRun, 1e-9);
+}
+
+TEST(StepExtent, UprightsBesideFewStepsOrOutOfLineLeaveTheSideUnseen) {
+    const PointCloud treads = flightCloud(-0.2, true, false);
+    PointCloud two = treads;  // beside two steps only (a box, a bin)
+    addUprightBeside(two, 1, -kHalfWidth - 0.03);
+    addUprightBeside(two, 2, -kHalfWidth - 0.03);
+    PointCloud scattered = treads;  // beside every step, but not in line (furniture)
+    for (int k = 0; k + 1 < kSteps; ++k) addUprightBeside(scattered, k, -0.5 - 0.15 * k);
+    PointCloud beyond_drop = treads;  // in line, but a drop is seen in the hole before it
+    for (int k = 0; k + 1 < kSteps; ++k) {
+        addUprightBeside(beyond_drop, k, -kHalfWidth - 0.03);
+        for (double x = nosingX(k) + 0.05; x < nosingX(k + 1) - 0.05; x += 0.02)
+            beyond_drop.emplace_back(static_cast<float>(x), -0.6f, static_cast<float>(kFloor));
+    }
+    for (const PointCloud* cloud : {&two, &scattered, &beyond_drop}) {
+        Staircase s = pieces();
+        measureStepExtents(*cloud, s);
+        EXPECT_EQ(s.right_side, StairSide::Unseen);
+        EXPECT_NEAR(s.step_width, kHalfWidth + 0.2, 0.08);  // the left wall's foot counts as tread
+    }
+}
+
 TEST(StepExtent, DetectorReportsSidesAndFullWidthOnARayCastScene) {
     // wall on the flight's left, floor visible beyond its right end
     test::SceneOptions o;
