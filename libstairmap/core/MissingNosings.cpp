@@ -33,6 +33,8 @@ double spacing(const LineSegment& a, const LineSegment& b) {
     return std::abs(a.distanceTo(b.centre()));
 }
 
+/// [m] a pair of edges this long pins its spacing better than riser hits pin their heights
+constexpr double kLongEdgeM = 1.0;
 bool oneStep(double ratio) { return ratio >= kOneStepMin && ratio <= kOneStepMax; }
 bool twoSteps(double ratio) { return ratio >= kMinGapRatio && ratio <= kMaxGapRatio; }
 
@@ -44,7 +46,8 @@ bool twoSteps(double ratio) { return ratio >= kMinGapRatio && ratio <= kMaxGapRa
 /// spacing: raw heights of riser hits read low by up to a ring spacing, so a rise alone could make
 /// an ordinary pair look like two steps. Returns 0 when the chain is not so.
 double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
-                                 const std::vector<double>& rises, double median_rise) {
+                                 const std::vector<double>& rises, double median_rise,
+                                 double& one_step_run) {
     std::vector<double> runs(rises.size());
     for (std::size_t i = 1; i < edges.size(); ++i) runs[i - 1] = spacing(edges[i - 1], edges[i]);
     std::vector<double> small_rises, small_runs;
@@ -60,6 +63,7 @@ double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
         const double kz = rises[i] / unit_rise, ks = runs[i] / unit_run;
         if (!(oneStep(kz) && oneStep(ks)) && !(twoSteps(kz) && twoSteps(ks))) return 0.0;
     }
+    one_step_run = unit_run;
     return unit_rise;
 }
 
@@ -80,19 +84,28 @@ LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& en
     return m;
 }
 
-int fillMissingNosings(std::vector<LineSegment>& edges) {
+int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {
     if (edges.size() < 3) return 0;
     std::vector<double> rises;
     for (std::size_t i = 1; i < edges.size(); ++i)
         rises.push_back(std::abs(edges[i].z - edges[i - 1].z));
     const double median_rise = upperMedian(rises);
-    const double aliased_unit = oneStepRiseOfAliasedChain(edges, rises, median_rise);
+    double run = 0.0;
+    const double aliased_unit = oneStepRiseOfAliasedChain(edges, rises, median_rise, run);
     const double rise = aliased_unit > 0.0 ? aliased_unit : median_rise;
     if (rise <= 0.0) return 0;
+    if (aliased_unit <= 0.0) {
+        std::vector<double> runs;
+        for (std::size_t i = 1; i < edges.size(); ++i) runs.push_back(spacing(edges[i - 1], edges[i]));
+        run = upperMedian(runs);
+    }
     int inserted = 0;
     for (std::size_t i = 1; i < edges.size(); ++i) {
         const double ratio = std::abs(edges[i].z - edges[i - 1].z) / rise;
         if (ratio < kMinGapRatio || ratio > kMaxGapRatio) continue;
+        const bool long_pair = std::min(edges[i - 1].length(), edges[i].length()) >= kLongEdgeM;
+        if ((median_rise < min_rise_m || long_pair) && oneStep(spacing(edges[i - 1], edges[i]) / run))
+            continue;
         edges.insert(edges.begin() + static_cast<std::ptrdiff_t>(i),
                      halfway(edges[i - 1], edges[i]));
         ++inserted;

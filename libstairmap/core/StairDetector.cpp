@@ -279,7 +279,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
             edges.push_back(from[idx]);
             if (!up) edges.back().z = 2 * floor_z - edges.back().z;
         }
-        fillMissingNosings(edges);  // edges the search stepped over
+        fillMissingNosings(edges, p.min_step_height_m);  // edges the search stepped over
         return edges;
     };
     // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.

@@ -56,5 +56,38 @@ TEST(MissingNosings, AnEdgeReadLowIsNoReasonToSplitTheOtherSteps) {
     EXPECT_EQ(edges.size(), 6u);
 }
 
+/// Edges one run apart (0.24 m) at the given heights, `half` metres either side of the axis.
+std::vector<LineSegment> evenlySpacedAt(const std::vector<double>& z, double half) {
+    std::vector<LineSegment> edges;
+    for (std::size_t k = 0; k < z.size(); ++k) edges.push_back(test::nosingAcrossY(1.0 + 0.24 * k, z[k], half));
+    return edges;
+}
+
+TEST(MissingNosings, RiserHitsBelowABuildingCodeRiseAreNotSplitWhereTheSpacingIsOneRun) {
+    // A far LiDAR's riser hits read low by up to a ring spacing (dev2 r0151, r0170): typical pairs
+    // 7-8 cm apart, under condition 1's 0.11 m, one 15.6 cm. That pair is one run apart like the
+    // others: one step read high against its neighbours, not two steps (putting one back made
+    // the flight's rise 8.3 cm for 10.4 cm).
+    const std::vector<double> z = {0.0, 0.07, 0.226, 0.306, 0.386};
+    std::vector<LineSegment> short_pieces = evenlySpacedAt(z, 0.3);
+    EXPECT_EQ(fillMissingNosings(short_pieces, 0.11), 0);
+    EXPECT_EQ(short_pieces.size(), 5u);
+    // without condition 1's bound the heights alone decide (two steps there)
+    std::vector<LineSegment> unbounded = evenlySpacedAt(z, 0.3);
+    EXPECT_EQ(fillMissingNosings(unbounded), 1);
+}
+
+TEST(MissingNosings, LongEdgesOneRunApartAreOneStepWhateverTheirHeights) {
+    // Plausible rises, one pair twice as high but one run apart. Long edges (1.2 m) pin their
+    // spacing well: one step whose lower edge is a riser hit read low (dev2 r0098).
+    const std::vector<double> z = {0.0, 0.17, 0.34, 0.68, 0.85};
+    std::vector<LineSegment> long_edges = evenlySpacedAt(z, 0.6);
+    EXPECT_EQ(fillMissingNosings(long_edges, 0.11), 0);
+    // Short far pieces (0.6 m) scatter in direction, their spacing is no better than their
+    // heights: the heights decide (dev2 r0087, a skipped nosing whose pair measured one run).
+    std::vector<LineSegment> short_pieces = evenlySpacedAt(z, 0.3);
+    EXPECT_EQ(fillMissingNosings(short_pieces, 0.11), 1);
+}
+
 }  // namespace
 }  // namespace stairmap
