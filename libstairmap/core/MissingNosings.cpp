@@ -44,7 +44,9 @@ bool twoSteps(double ratio) { return ratio >= kMinGapRatio && ratio <= kMaxGapRa
 /// back). The pairs under 1/kMinGapRatio of the median rise are taken as one step, and the unit
 /// is kept only when every pair is one or two of its steps apart in both rise and horizontal
 /// spacing: raw heights of riser hits read low by up to a ring spacing, so a rise alone could make
-/// an ordinary pair look like two steps. Returns 0 when the chain is not so.
+/// an ordinary pair look like two steps. For the same reason a pair one run apart is one step
+/// while its rise is under two steps' lower bound (dev r0192: 1.4 steps from a low riser hit).
+/// Returns 0 when the chain is not so.
 double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
                                  const std::vector<double>& rises, double median_rise,
                                  double& one_step_run) {
@@ -61,7 +63,8 @@ double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
     if (unit_rise <= 0.0 || unit_run <= 0.0) return 0.0;
     for (std::size_t i = 0; i < rises.size(); ++i) {
         const double kz = rises[i] / unit_rise, ks = runs[i] / unit_run;
-        if (!(oneStep(kz) && oneStep(ks)) && !(twoSteps(kz) && twoSteps(ks))) return 0.0;
+        const bool one = oneStep(ks) && kz >= kOneStepMin && kz < kMinGapRatio;
+        if (!one && !(twoSteps(kz) && twoSteps(ks))) return 0.0;
     }
     one_step_run = unit_run;
     return unit_rise;

@@ -44,6 +44,17 @@ TEST(MissingNosings, AChainSkippingMostOtherNosingsGetsEveryStepBack) {
     }
 }
 
+TEST(MissingNosings, AnAliasedChainWithOneRiserHitReadLowStillGetsEveryStepBack) {
+    // dev r0192: pairs 1, 2, 2, 1 steps apart; the last pair's lower edge is a riser hit read 4.5 cm
+    // low, so that one-step pair rises 1.4 steps (neither one nor two), but its spacing is one run.
+    std::vector<LineSegment> edges = edgesAtSteps({0, 1, 3, 5, 6});
+    edges[3].z -= 0.045;
+    EXPECT_EQ(fillMissingNosings(edges, 0.11), 2);
+    ASSERT_EQ(edges.size(), 7u);
+    for (std::size_t k = 0; k < edges.size(); ++k)
+        EXPECT_NEAR(edges[k].centre().x(), 1.0 + k * kRun, 1e-9) << "edge " << k;
+}
+
 TEST(MissingNosings, AnEdgeReadLowIsNoReasonToSplitTheOtherSteps) {
     // Evenly spaced nosings where the last riser hit reads 7 cm low: its rise alone looks like one
     // step of a flight with 0.10 m rises, the others two of them; but its spacing is a full run,
