@@ -21,6 +21,8 @@ struct TreadScan {
     Eigen::Vector2d c, u, n;
     double z = 0.0, s_lo = 0.0, s_hi = 0.0, t0 = 0.0;
     double nosing_band = 0.0;  ///< [m] |s| up to this is on the nosing line
+    /// [m] beyond this s, points up to next_front_dz above the tread are the next step's front
+    double next_front_s = 1e18, next_front_dz = 0.0;
     std::size_t step = 0;          ///< index in the staircase
     int edge_lo = 0, edge_hi = 0;  ///< bins covered by the found edge
     std::vector<std::uint8_t> bins;  ///< kTread | kAbove | kBelow | kOnNosing | kAboveNosing
@@ -65,6 +67,10 @@ TreadScan scanOf(const Staircase& s, std::size_t k, const StepExtentParams& p) {
     t.s_lo = up ? p.tread_from_runs * run : -p.tread_to_runs * run;
     t.s_hi = up ? p.tread_to_runs * run : -p.tread_from_runs * run;
     t.nosing_band = p.nosing_band_runs * run;
+    if (up) {  // ascending: the next riser (or open tread's front) stands at s = run
+        t.next_front_s = run - p.next_front_margin_m;
+        t.next_front_dz = 1.5 * s.step_height;
+    }
     const double half = 0.5 * e.length(), reach = p.max_extension_m + p.side_band_m;
     t.t0 = -half - reach;
     t.bins.assign(static_cast<std::size_t>(std::ceil((2 * half + 2 * reach) / p.bin_m)) + 1, 0);
@@ -97,7 +103,9 @@ void addPoint(TreadScan& t, const Eigen::Vector3f& q, const StepExtentParams& p)
             ++acc.on;
             t.bins[b] |= kTread;
         }
-    } else if (dz > p.side_dz_m && dz < kMaxAbove) t.bins[b] |= kAbove;
+    } else if (dz > p.side_dz_m && dz < kMaxAbove) {
+        if (!(s > t.next_front_s && dz < t.next_front_dz)) t.bins[b] |= kAbove;
+    }
     else if (dz < -p.side_dz_m) t.bins[b] |= kBelow;
 }
 

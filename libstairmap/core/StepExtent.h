@@ -42,6 +42,10 @@ struct StepExtentParams {
     /// the same result, 2x fewer instructions on the randomised sets). false offers every point
     /// to every tread: the reference the index is tested equal to.
     bool index_along_flight = true;
+    /// [m] on an ascending flight, points in the tread window's last this much before the next
+    /// nosing and less than 1.5 rises above the tread are the next step's front (its riser, an
+    /// open tread's edge), spread there by range noise along a far flight: not a wall
+    double next_front_margin_m = 0.08;
     /// [m] A side no step sees bounded is bounded after all by a wall or railing seen beyond a
     /// hole up to this wide (the tread between hidden: a LiDAR's blind cone close below it, the
     /// nearer steps over a descending flight) ...

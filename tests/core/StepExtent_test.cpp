@@ -216,6 +216,32 @@ TEST(StepExtent, UprightsBesideFewStepsOrOutOfLineLeaveTheSideUnseen) {
     }
 }
 
+TEST(StepExtent, TheNextStepsFrontSpreadOverTheTreadByRangeNoiseIsNoWall) {
+    // A far view: each tread seen in strips 0.1 m wide with 0.2 m holes between, and the next
+    // step's front (its riser's top, an open tread's edge) spread 6 cm onto the tread by range
+    // noise along the flight. A wall on the left, the floor beyond the right end.
+    PointCloud cloud;
+    for (int k = 0; k + 1 < kSteps; ++k)
+        for (double x = nosingX(k) + 0.02; x < nosingX(k + 1) - 0.08; x += 0.02) {
+            for (double y0 = -kHalfWidth; y0 < kHalfWidth; y0 += 0.3)
+                for (double y = y0; y <= y0 + 0.1; y += 0.02)
+                    cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(treadZ(k)));
+            for (double z = treadZ(k); z < treadZ(k) + 1.2; z += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(kHalfWidth + 0.03), static_cast<float>(z));
+            for (double y = -kHalfWidth - 0.3; y < -kHalfWidth - 0.05; y += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(kFloor));
+        }
+    for (int k = 0; k + 1 < kSteps; ++k)
+        for (double y = -kHalfWidth; y <= kHalfWidth; y += 0.02)
+            cloud.emplace_back(static_cast<float>(nosingX(k + 1) - 0.06), static_cast<float>(y),
+                               static_cast<float>(treadZ(k) + 0.7 * kRise));
+    Staircase s = pieces();
+    measureStepExtents(cloud, s);
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+}
+
 TEST(StepExtent, DetectorReportsSidesAndFullWidthOnARayCastScene) {
     // wall on the flight's left, floor visible beyond its right end
     test::SceneOptions o;
