@@ -86,6 +86,9 @@ void DetectorParams::validate() const {
     requireRange(min_level_tread_slope_deg, 0.0, min_slope_deg, "min_level_tread_slope_deg");
     if (max_level_tread_depth_m != 0.0)
         requireRange(min_deep_tread_m, min_step_depth_m, max_level_tread_depth_m, "min_deep_tread_m");
+    if (max_double_step_rise_m != 0.0)
+        requireRange(max_double_step_rise_m, 2 * min_step_height_m, max_step_height_m,
+                     "max_double_step_rise_m");
     requireRange(max_parallel_deg, 0.0, 90.0, "max_parallel_deg");
     requireRange(edge_height_tolerance_m, 0.0, 0.1, "edge_height_tolerance_m");
     requireRange(between_overlap_ratio, 0.0, 1.0, "between_overlap_ratio");

@@ -86,6 +86,14 @@ struct DetectorParams {
     double min_deep_tread_m = 0.40;
     /// [deg] condition 3's minimum slope for such chains (0.19 m rises on 0.64 m treads: 16.5 deg)
     double min_level_tread_slope_deg = 15.0;
+    /// [m] ring-aliased flights: a far LiDAR may see every other nosing only (each pair two
+    /// steps apart, runs beyond condition 2's bound). An ascending chain of such pairs, its rises
+    /// in [2 min_step_height_m, this] and runs in [2 min_step_depth_m, 2 max_step_depth_m], whose
+    /// treads are not seen level (a real deep tread is flat, an aliased pair's holds a riser) and
+    /// with no line where a skipped nosing would lie (a dense noisy view's chain that merely
+    /// stepped over lines), is the flight with every other nosing put back halfway. 0.26 (0.30 with the sparse-mode
+    /// tolerance) keeps bleachers' 0.36-0.50 m tiers out. 0 = off.
+    double max_double_step_rise_m = 0.26;
     /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; a spiral's
     /// wedge treads turn run / mid radius per step: 15-25 deg on wide spirals, up to 40 deg and more
     /// on narrow ones (0.3 m run at 0.45 m mid radius: 38 deg), so 45 is the default (rise, run,

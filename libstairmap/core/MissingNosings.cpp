@@ -15,15 +15,6 @@ constexpr double kMaxGapRatio = 2.4;  ///< [-] ... up to this many
 constexpr double kUnseenRhoVar = 0.05 * 0.05;
 constexpr double kUnseenThetaVar = 0.1 * 0.1;
 
-/// The edge halfway between a and b, its end points paired by their position along a.
-LineSegment halfway(const LineSegment& a, const LineSegment& b) {
-    const Eigen::Vector2d u = a.direction();
-    const bool same_order = u.dot(b.end - b.start) >= 0;
-    const Eigen::Vector2d b_start = same_order ? b.start : b.end;
-    const Eigen::Vector2d b_end = same_order ? b.end : b.start;
-    return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
-}
-
 /// [-] a pair within these multiples of the one-step rise and spacing is one step apart
 constexpr double kOneStepMin = 0.75;
 constexpr double kOneStepMax = 1.33;
@@ -72,6 +63,15 @@ double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
 
 }  // namespace
 
+/// The edge halfway between a and b, its end points paired by their position along a.
+LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b) {
+    const Eigen::Vector2d u = a.direction();
+    const bool same_order = u.dot(b.end - b.start) >= 0;
+    const Eigen::Vector2d b_start = same_order ? b.start : b.end;
+    const Eigen::Vector2d b_end = same_order ? b.end : b.start;
+    return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
+}
+
 LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double z) {
     LineSegment m;
     m.start = start;
@@ -110,7 +110,7 @@ int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {
         if ((median_rise < min_rise_m || long_pair) && oneStep(spacing(edges[i - 1], edges[i]) / run))
             continue;
         edges.insert(edges.begin() + static_cast<std::ptrdiff_t>(i),
-                     halfway(edges[i - 1], edges[i]));
+                     halfwayNosing(edges[i - 1], edges[i]));
         ++inserted;
         ++i;  // skip the inserted edge
     }

@@ -249,6 +249,21 @@ bool mayContinue(const std::vector<LineSegment>& edges, const DetectorParams& p)
            isRegularStraightChain(edges, continuationParams(p));
 }
 
+/// Whether one of `lines` lies where the nosing halfway between edges a and b would (within a
+/// quarter of their spacing of its line and of their rise of its height, beside its extent): then
+/// the pair is not two steps with the middle nosing unseen, whatever kept the search off it.
+bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a, const LineSegment& b) {
+    const LineSegment mid = halfwayNosing(a, b);
+    const double spacing = std::abs(a.distanceTo(b.centre())), rise = std::abs(b.z - a.z);
+    const Eigen::Vector2d u = mid.direction();
+    for (const LineSegment& l : lines) {
+        if (std::abs(l.z - mid.z) > 0.25 * rise) continue;
+        if (std::abs(mid.distanceTo(l.centre())) > 0.25 * spacing) continue;
+        if (std::abs(u.dot(l.centre() - mid.centre())) <= 0.5 * (mid.length() + l.length())) return true;
+    }
+    return false;
+}
+
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
                      StairDirection dir, double floor_z, const DetectorParams& p,
                      std::vector<Staircase>& out, DetectorDebug* debug,
@@ -267,11 +282,12 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     DetectorParams search = p;
     if (!up) search.min_steps = std::max(2, p.min_steps - 1);
     const bool deep_treads = up && p.max_level_tread_depth_m > p.max_step_depth_m;
+    const bool pairs_apart = up && p.max_double_step_rise_m > 0;
     std::vector<int> refused;
     std::vector<std::vector<int>> refused_ties;
     std::vector<char> used;
     const auto chains = searchStaircases(lines, floor_z, p.floor_tolerance_m, search, &refused,
-                                         debug || deep_treads ? &used : nullptr, up,
+                                         debug || deep_treads || pairs_apart ? &used : nullptr, up,
                                          up ? &refused_ties : nullptr);
     const auto edgesOf = [&](const std::vector<LineSegment>& from, const std::vector<int>& chain) {
         std::vector<LineSegment> edges;
@@ -361,6 +377,35 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
             return isDeepLevel(edges, p.min_deep_tread_m, seen_densely) &&
                    unseenBeyondLastEdge(cloud, edges, continuationParams(p));
         });
+    }
+    // Ring-aliased flights (DetectorParams::max_double_step_rise_m): the search again on the
+    // lines left, for pairs two steps apart; the skipped nosings are put back halfway.
+    if (pairs_apart) {
+        std::vector<LineSegment> rest;
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            if (!used[i]) rest.push_back(lines[i]);
+        DetectorParams two_steps = search;
+        two_steps.min_step_height_m = 2 * p.min_step_height_m;
+        two_steps.max_step_height_m = p.max_double_step_rise_m;
+        two_steps.min_step_depth_m = 2 * p.min_step_depth_m;
+        two_steps.max_step_depth_m = 2 * p.max_step_depth_m;
+        for (const auto& chain : searchStaircases(rest, floor_z, p.floor_tolerance_m, two_steps,
+                                                  nullptr, nullptr, up, nullptr)) {
+            const std::vector<LineSegment> seen = edgesOf(rest, chain);
+            if (treadsSeenLevel(cloud, seen)) continue;  // deep level treads: no step between
+            std::vector<LineSegment> edges;
+            bool unseen_between = true;
+            for (std::size_t k = 0; k < seen.size() && unseen_between; ++k) {
+                if (k > 0) {
+                    unseen_between = !seenBetween(lines, seen[k - 1], seen[k]);
+                    edges.push_back(halfwayNosing(seen[k - 1], seen[k]));
+                }
+                edges.push_back(seen[k]);
+            }
+            if (!unseen_between) continue;
+            correct(edges);
+            out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+        }
     }
     if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
 }

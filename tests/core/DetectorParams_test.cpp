@@ -95,6 +95,10 @@ INSTANTIATE_TEST_SUITE_P(
                              [](DetectorParams& p) { p.floor_tolerance_m = 0.2; }},
                     BadValue{"max_level_tread_depth_m",  // below the usual run bound
                              [](DetectorParams& p) { p.max_level_tread_depth_m = 0.3; }},
+                    BadValue{"max_double_step_rise_m",  // under two of the smallest rises
+                             [](DetectorParams& p) { p.max_double_step_rise_m = 0.15; }},
+                    BadValue{"max_double_step_rise_m",  // beyond condition 1's bound
+                             [](DetectorParams& p) { p.max_double_step_rise_m = 0.5; }},
                     BadValue{"min_level_tread_slope_deg",  // above the usual slope bound
                              [](DetectorParams& p) { p.min_level_tread_slope_deg = 30; }},
                     BadValue{"min_deep_tread_m",  // deeper than the deep search reaches
