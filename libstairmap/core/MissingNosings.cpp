@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/UpperMedian.h"
@@ -115,6 +116,38 @@ int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {
         ++i;  // skip the inserted edge
     }
     return inserted;
+}
+
+namespace {
+
+/// Whether one of `lines` lies where the nosing halfway between edges a and b would (within a
+/// quarter of their spacing of its line and of their rise of its height, beside its extent): then
+/// the pair is not two steps with the middle nosing unseen, whatever kept the search off it.
+bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a, const LineSegment& b) {
+    const LineSegment mid = halfwayNosing(a, b);
+    const double spacing = std::abs(a.distanceTo(b.centre())), rise = std::abs(b.z - a.z);
+    const Eigen::Vector2d u = mid.direction();
+    for (const LineSegment& l : lines) {
+        if (std::abs(l.z - mid.z) > 0.25 * rise) continue;
+        if (std::abs(mid.distanceTo(l.centre())) > 0.25 * spacing) continue;
+        if (std::abs(u.dot(l.centre() - mid.centre())) <= 0.5 * (mid.length() + l.length())) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool putBackEveryOtherNosing(const std::vector<LineSegment>& lines, std::vector<LineSegment>& edges) {
+    std::vector<LineSegment> all;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        if (k > 0) {
+            if (seenBetween(lines, edges[k - 1], edges[k])) return false;
+            all.push_back(halfwayNosing(edges[k - 1], edges[k]));
+        }
+        all.push_back(edges[k]);
+    }
+    edges = std::move(all);
+    return true;
 }
 
 }  // namespace stairmap

@@ -30,4 +30,12 @@ LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b);
 /// 0.25 / 0.59 -> 0.21 / 0.49 cm (r0098, r0151, r0170 had a nosing put back mid-tread).
 int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m = 0.0);
 
+/// A chain whose consecutive edges are each two steps apart (a far LiDAR whose rings alias with
+/// the steps sees every other nosing: DetectorParams::max_double_step_rise_m) as the flight: the
+/// nosing halfway between each pair put back (unseenNosing). Returns false and leaves `edges`
+/// as they are when one of `lines` (real z) lies where a put-back nosing would, within a quarter
+/// of the pair's spacing of its line and of its rise of its height and beside its extent: the
+/// nosing was seen, the pair is no aliased one.
+bool putBackEveryOtherNosing(const std::vector<LineSegment>& lines, std::vector<LineSegment>& edges);
+
 }  // namespace stairmap

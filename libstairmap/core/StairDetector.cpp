@@ -249,21 +249,6 @@ bool mayContinue(const std::vector<LineSegment>& edges, const DetectorParams& p)
            isRegularStraightChain(edges, continuationParams(p));
 }
 
-/// Whether one of `lines` lies where the nosing halfway between edges a and b would (within a
-/// quarter of their spacing of its line and of their rise of its height, beside its extent): then
-/// the pair is not two steps with the middle nosing unseen, whatever kept the search off it.
-bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a, const LineSegment& b) {
-    const LineSegment mid = halfwayNosing(a, b);
-    const double spacing = std::abs(a.distanceTo(b.centre())), rise = std::abs(b.z - a.z);
-    const Eigen::Vector2d u = mid.direction();
-    for (const LineSegment& l : lines) {
-        if (std::abs(l.z - mid.z) > 0.25 * rise) continue;
-        if (std::abs(mid.distanceTo(l.centre())) > 0.25 * spacing) continue;
-        if (std::abs(u.dot(l.centre() - mid.centre())) <= 0.5 * (mid.length() + l.length())) return true;
-    }
-    return false;
-}
-
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
                      StairDirection dir, double floor_z, const DetectorParams& p,
                      std::vector<Staircase>& out, DetectorDebug* debug,
@@ -391,18 +376,9 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         two_steps.max_step_depth_m = 2 * p.max_step_depth_m;
         for (const auto& chain : searchStaircases(rest, floor_z, p.floor_tolerance_m, two_steps,
                                                   nullptr, nullptr, up, nullptr)) {
-            const std::vector<LineSegment> seen = edgesOf(rest, chain);
-            if (treadsSeenLevel(cloud, seen)) continue;  // deep level treads: no step between
-            std::vector<LineSegment> edges;
-            bool unseen_between = true;
-            for (std::size_t k = 0; k < seen.size() && unseen_between; ++k) {
-                if (k > 0) {
-                    unseen_between = !seenBetween(lines, seen[k - 1], seen[k]);
-                    edges.push_back(halfwayNosing(seen[k - 1], seen[k]));
-                }
-                edges.push_back(seen[k]);
-            }
-            if (!unseen_between) continue;
+            std::vector<LineSegment> edges = edgesOf(rest, chain);
+            if (treadsSeenLevel(cloud, edges)) continue;  // deep level treads: no step between
+            if (!putBackEveryOtherNosing(lines, edges)) continue;
             correct(edges);
             out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
         }

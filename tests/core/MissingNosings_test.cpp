@@ -100,5 +100,27 @@ TEST(MissingNosings, LongEdgesOneRunApartAreOneStepWhateverTheirHeights) {
     EXPECT_EQ(fillMissingNosings(short_pieces, 0.11), 1);
 }
 
+TEST(MissingNosings, EveryOtherNosingIsPutBackWhereNoLineWasSeen) {
+    // A far LiDAR whose rings alias with the steps sees nosings 0, 2, 4, 6 only.
+    std::vector<LineSegment> edges = edgesAtSteps({0, 2, 4, 6});
+    const std::vector<LineSegment> lines = edges;  // all the lines found near the flight
+    ASSERT_TRUE(putBackEveryOtherNosing(lines, edges));
+    ASSERT_EQ(edges.size(), 7u);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        EXPECT_NEAR(edges[k].z, k * kRise, 1e-9) << "edge " << k;
+        EXPECT_NEAR(edges[k].centre().x(), 1.0 + k * kRun, 1e-9) << "edge " << k;
+        EXPECT_EQ(edges[k].num_points == 0, k % 2 == 1) << "edge " << k;
+    }
+}
+
+TEST(MissingNosings, NoNosingIsPutBackWhereALineWasSeen) {
+    // Nosing 3 was found (a piece 0.4 m long, 2 cm off), the search merely stepped over it.
+    std::vector<LineSegment> edges = edgesAtSteps({0, 2, 4, 6});
+    std::vector<LineSegment> lines = edges;
+    lines.push_back(test::nosingAcrossY(1.0 + 3 * kRun + 0.02, 3 * kRise - 0.01, 0.2));
+    EXPECT_FALSE(putBackEveryOtherNosing(lines, edges));
+    EXPECT_EQ(edges.size(), 4u);
+}
+
 }  // namespace
 }  // namespace stairmap
