@@ -100,7 +100,8 @@ int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {
     if (rise <= 0.0) return 0;
     if (aliased_unit <= 0.0) {
         std::vector<double> runs;
-        for (std::size_t i = 1; i < edges.size(); ++i) runs.push_back(spacing(edges[i - 1], edges[i]));
+        for (std::size_t i = 1; i < edges.size(); ++i)
+            runs.push_back(spacing(edges[i - 1], edges[i]));
         run = upperMedian(runs);
     }
     int inserted = 0;
@@ -108,7 +109,8 @@ int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {
         const double ratio = std::abs(edges[i].z - edges[i - 1].z) / rise;
         if (ratio < kMinGapRatio || ratio > kMaxGapRatio) continue;
         const bool long_pair = std::min(edges[i - 1].length(), edges[i].length()) >= kLongEdgeM;
-        if ((median_rise < min_rise_m || long_pair) && oneStep(spacing(edges[i - 1], edges[i]) / run))
+        if ((median_rise < min_rise_m || long_pair) &&
+            oneStep(spacing(edges[i - 1], edges[i]) / run))
             continue;
         edges.insert(edges.begin() + static_cast<std::ptrdiff_t>(i),
                      halfwayNosing(edges[i - 1], edges[i]));
@@ -123,21 +125,24 @@ namespace {
 /// Whether one of `lines` lies where the nosing halfway between edges a and b would (within a
 /// quarter of their spacing of its line and of their rise of its height, beside its extent): then
 /// the pair is not two steps with the middle nosing unseen, whatever kept the search off it.
-bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a, const LineSegment& b) {
+bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a,
+                 const LineSegment& b) {
     const LineSegment mid = halfwayNosing(a, b);
     const double spacing = std::abs(a.distanceTo(b.centre())), rise = std::abs(b.z - a.z);
     const Eigen::Vector2d u = mid.direction();
     for (const LineSegment& l : lines) {
         if (std::abs(l.z - mid.z) > 0.25 * rise) continue;
         if (std::abs(mid.distanceTo(l.centre())) > 0.25 * spacing) continue;
-        if (std::abs(u.dot(l.centre() - mid.centre())) <= 0.5 * (mid.length() + l.length())) return true;
+        if (std::abs(u.dot(l.centre() - mid.centre())) <= 0.5 * (mid.length() + l.length()))
+            return true;
     }
     return false;
 }
 
 }  // namespace
 
-bool putBackEveryOtherNosing(const std::vector<LineSegment>& lines, std::vector<LineSegment>& edges) {
+bool putBackEveryOtherNosing(const std::vector<LineSegment>& lines,
+                             std::vector<LineSegment>& edges) {
     std::vector<LineSegment> all;
     for (std::size_t k = 0; k < edges.size(); ++k) {
         if (k > 0) {

@@ -36,6 +36,7 @@ int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m = 0.0)
 /// as they are when one of `lines` (real z) lies where a put-back nosing would, within a quarter
 /// of the pair's spacing of its line and of its rise of its height and beside its extent: the
 /// nosing was seen, the pair is no aliased one.
-bool putBackEveryOtherNosing(const std::vector<LineSegment>& lines, std::vector<LineSegment>& edges);
+bool putBackEveryOtherNosing(const std::vector<LineSegment>& lines,
+                             std::vector<LineSegment>& edges);
 
 }  // namespace stairmap

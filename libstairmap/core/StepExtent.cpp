@@ -105,8 +105,9 @@ void addPoint(TreadScan& t, const Eigen::Vector3f& q, const StepExtentParams& p)
         }
     } else if (dz > p.side_dz_m && dz < kMaxAbove) {
         if (!(s > t.next_front_s && dz < t.next_front_dz)) t.bins[b] |= kAbove;
+    } else if (dz < -p.side_dz_m) {
+        t.bins[b] |= kBelow;
     }
-    else if (dz < -p.side_dz_m) t.bins[b] |= kBelow;
 }
 
 /// The scans ordered by their position along the flight, so that a point is offered only to the
@@ -242,7 +243,7 @@ struct AcrossFlight {
     }
 };
 
-/// Side `dir` (-1 left, +1 right) seen unseen on the steps: where a wall or railing is seen
+/// Side `dir` (-1 left, +1 right), where the steps saw it unseen: if a wall or railing is seen
 /// beyond the hole on enough of them at one place across the flight (robust: the median), the
 /// position of the flight's side there; NaN if none.
 double boundAcrossHole(const std::vector<TreadScan>& scans, const std::vector<Extent>& ext, int dir,
@@ -255,8 +256,8 @@ double boundAcrossHole(const std::vector<TreadScan>& scans, const std::vector<Ex
         ++unseen;
         const TreadScan& t = scans[k];
         const int end = dir < 0 ? ext[k].lo : ext[k].hi;
-        for (int i = end + dir, n = 0; i >= 0 && i < static_cast<int>(t.bins.size()) && n < max_bins;
-             i += dir, ++n) {
+        for (int i = end + dir, n = 0;
+             i >= 0 && i < static_cast<int>(t.bins.size()) && n < max_bins; i += dir, ++n) {
             if (t.bins[i] & kBelow) break;  // a drop: no wall bounds the tread here
             if (t.bins[i] & kAbove) {
                 at.push_back(across.at(t, dir < 0 ? i + 1 : i, p.bin_m));
@@ -267,7 +268,8 @@ double boundAcrossHole(const std::vector<TreadScan>& scans, const std::vector<Ex
     if (static_cast<int>(at.size()) < p.min_bridge_steps) return std::nan("");
     std::nth_element(at.begin(), at.begin() + at.size() / 2, at.end());
     const double median = at[at.size() / 2];
-    const auto agree = std::count_if(at.begin(), at.end(), [&](double a) { return std::abs(a - median) <= p.bridge_agree_m; });
+    const auto agree = std::count_if(
+        at.begin(), at.end(), [&](double a) { return std::abs(a - median) <= p.bridge_agree_m; });
     if (agree < p.min_bridge_steps || 2 * agree < unseen) return std::nan("");
     return median;
 }
@@ -358,7 +360,8 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
     // move their centres sideways, and a fit's small angle error there shifts the run (dev r0275:
     // run 1.8 -> 4.8 cm off).
     estimateGeometry(stairs);
-    if (boundSidesAcrossHoles(scans, ext, p, stairs)) stairs.location = stairs.steps.front().centre();
+    if (boundSidesAcrossHoles(scans, ext, p, stairs))
+        stairs.location = stairs.steps.front().centre();
     std::vector<double> widths;
     for (const TreadScan& t : scans) widths.push_back(stairs.steps[t.step].length());
     if (widths.size() >= 2) stairs.step_width = flightWidth(widths, stairs);

@@ -45,8 +45,9 @@ TEST(MissingNosings, AChainSkippingMostOtherNosingsGetsEveryStepBack) {
 }
 
 TEST(MissingNosings, AnAliasedChainWithOneRiserHitReadLowStillGetsEveryStepBack) {
-    // dev r0192: pairs 1, 2, 2, 1 steps apart; the last pair's lower edge is a riser hit read 4.5 cm
-    // low, so that one-step pair rises 1.4 steps (neither one nor two), but its spacing is one run.
+    // dev r0192: pairs 1, 2, 2, 1 steps apart; the last pair's lower edge is a riser hit read 4.5
+    // cm low, so that one-step pair rises 1.4 steps (neither one nor two), but its spacing is one
+    // run.
     std::vector<LineSegment> edges = edgesAtSteps({0, 1, 3, 5, 6});
     edges[3].z -= 0.045;
     EXPECT_EQ(fillMissingNosings(edges, 0.11), 2);
@@ -70,7 +71,8 @@ TEST(MissingNosings, AnEdgeReadLowIsNoReasonToSplitTheOtherSteps) {
 /// Edges one run apart (0.24 m) at the given heights, `half` metres either side of the axis.
 std::vector<LineSegment> evenlySpacedAt(const std::vector<double>& z, double half) {
     std::vector<LineSegment> edges;
-    for (std::size_t k = 0; k < z.size(); ++k) edges.push_back(test::nosingAcrossY(1.0 + 0.24 * k, z[k], half));
+    for (std::size_t k = 0; k < z.size(); ++k)
+        edges.push_back(test::nosingAcrossY(1.0 + 0.24 * k, z[k], half));
     return edges;
 }
 

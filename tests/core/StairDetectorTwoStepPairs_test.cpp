@@ -22,7 +22,8 @@ PointCloud flightMap(int risers, double rise, double run) {
     const double x_max = kFlightX + risers * run + 1.0;
     for (double x = -1.0; x < x_max; x += kCell)
         for (double y = -1.0; y <= 1.0; y += kCell) {
-            const int k = x < kFlightX ? 0 : std::min(risers, 1 + static_cast<int>((x - kFlightX) / run));
+            const int k =
+                x < kFlightX ? 0 : std::min(risers, 1 + static_cast<int>((x - kFlightX) / run));
             cloud.emplace_back(float(x), float(y), float(kFloorZ + k * rise));
         }
     return cloud;

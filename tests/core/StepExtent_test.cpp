@@ -189,7 +189,8 @@ TEST(StepExtent, AWallSeenBeyondAHoleOnEveryStepBoundsTheSide) {
     EXPECT_EQ(s.left_side, StairSide::Wall);
     EXPECT_EQ(s.right_side, StairSide::Wall);
     EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
-    for (int k = 0; k + 1 < kSteps; ++k) EXPECT_NEAR(s.steps[k].end.y(), -kHalfWidth, 0.05) << "step " << k;
+    for (int k = 0; k + 1 < kSteps; ++k)
+        EXPECT_NEAR(s.steps[k].end.y(), -kHalfWidth, 0.05) << "step " << k;
     // rise and run from the treads as seen, the edges' move sideways changes neither
     EXPECT_NEAR(s.step_height, kRise, 1e-9);
     EXPECT_NEAR(s.step_depth, kRun, 1e-9);
@@ -225,11 +226,14 @@ TEST(StepExtent, TheNextStepsFrontSpreadOverTheTreadByRangeNoiseIsNoWall) {
         for (double x = nosingX(k) + 0.02; x < nosingX(k + 1) - 0.08; x += 0.02) {
             for (double y0 = -kHalfWidth; y0 < kHalfWidth; y0 += 0.3)
                 for (double y = y0; y <= y0 + 0.1; y += 0.02)
-                    cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(treadZ(k)));
+                    cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                       static_cast<float>(treadZ(k)));
             for (double z = treadZ(k); z < treadZ(k) + 1.2; z += 0.04)
-                cloud.emplace_back(static_cast<float>(x), static_cast<float>(kHalfWidth + 0.03), static_cast<float>(z));
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(kHalfWidth + 0.03),
+                                   static_cast<float>(z));
             for (double y = -kHalfWidth - 0.3; y < -kHalfWidth - 0.05; y += 0.04)
-                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(kFloor));
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(kFloor));
         }
     for (int k = 0; k + 1 < kSteps; ++k)
         for (double y = -kHalfWidth; y <= kHalfWidth; y += 0.02)

@@ -70,9 +70,9 @@ INSTANTIATE_TEST_SUITE_P(
 
 // A far level VLP-16 (5.9 m) sees every other nosing of an open-riser flight (0.118 m rises,
 // 0.239 m runs): pairs two steps apart, their runs beyond condition 2 (max_double_step_rise_m).
-INSTANTIATE_TEST_SUITE_P(
-    RingAliasedFlights, MissedBefore,
-    testing::Values(SceneCase{1001, 9, 0.01, 0.03, false, "level VLP-16 at 5.9 m, every other nosing"}));
+INSTANTIATE_TEST_SUITE_P(RingAliasedFlights, MissedBefore,
+                         testing::Values(SceneCase{1001, 9, 0.01, 0.03, false,
+                                                   "level VLP-16 at 5.9 m, every other nosing"}));
 
 }  // namespace
 }  // namespace stairmap
