@@ -265,7 +265,7 @@ double boundAcrossHole(const std::vector<TreadScan>& scans, const std::vector<Ex
             }
         }
     }
-    if (static_cast<int>(at.size()) < p.min_bridge_steps) return std::nan("");
+    if (at.empty() || static_cast<int>(at.size()) < p.min_bridge_steps) return std::nan("");
     std::nth_element(at.begin(), at.begin() + at.size() / 2, at.end());
     const double median = at[at.size() / 2];
     const auto agree = std::count_if(

@@ -217,6 +217,17 @@ TEST(StepExtent, UprightsBesideFewStepsOrOutOfLineLeaveTheSideUnseen) {
     }
 }
 
+TEST(StepExtent, NoUprightBeyondTheHoleLeavesTheSideUnseenWhateverTheStepCountAsked) {
+    // Even asked for no agreeing steps at all, an empty hole bounds nothing (and reads no median
+    // of nothing).
+    StepExtentParams p;
+    p.min_bridge_steps = 0;
+    Staircase s = pieces();
+    measureStepExtents(flightCloud(-0.2, true, false), s, p);
+    EXPECT_EQ(s.right_side, StairSide::Unseen);
+    EXPECT_NEAR(s.step_width, kHalfWidth + 0.2, 0.08);
+}
+
 TEST(StepExtent, TheNextStepsFrontSpreadOverTheTreadByRangeNoiseIsNoWall) {
     // A far view: each tread seen in strips 0.1 m wide with 0.2 m holes between, and the next
     // step's front (its riser's top, an open tread's edge) spread 6 cm onto the tread by range
