@@ -38,12 +38,10 @@ bool twoSteps(double ratio) { return ratio >= kMinGapRatio && ratio <= kMaxGapRa
 /// spacing: raw heights of riser hits read low by up to a ring spacing, so a rise alone could make
 /// an ordinary pair look like two steps. For the same reason a pair one run apart is one step
 /// while its rise is under two steps' lower bound (dev r0192: 1.4 steps from a low riser hit).
-/// Returns 0 when the chain is not so.
-double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
-                                 const std::vector<double>& rises, double median_rise,
-                                 double& one_step_run) {
-    std::vector<double> runs(rises.size());
-    for (std::size_t i = 1; i < edges.size(); ++i) runs[i - 1] = spacing(edges[i - 1], edges[i]);
+/// `rises` and `runs` (horizontal spacings) are the consecutive pairs'. Returns 0 when the chain
+/// is not so.
+double oneStepRiseOfAliasedChain(const std::vector<double>& rises, const std::vector<double>& runs,
+                                 double median_rise, double& one_step_run) {
     std::vector<double> small_rises, small_runs;
     for (std::size_t i = 0; i < rises.size(); ++i) {
         if (rises[i] * kMinGapRatio > median_rise) continue;
@@ -62,8 +60,6 @@ double oneStepRiseOfAliasedChain(const std::vector<LineSegment>& edges,
     return unit_rise;
 }
 
-}  // namespace
-
 /// The edge halfway between a and b, its end points paired by their position along a.
 LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b) {
     const Eigen::Vector2d u = a.direction();
@@ -72,6 +68,25 @@ LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b) {
     const Eigen::Vector2d b_end = same_order ? b.end : b.start;
     return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
 }
+
+/// Whether one of `lines` lies where the nosing halfway between edges a and b would (within a
+/// quarter of their spacing of its line and of their rise of its height, beside its extent): then
+/// the pair is not two steps with the middle nosing unseen, whatever kept the search off it.
+bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a,
+                 const LineSegment& b) {
+    const LineSegment mid = halfwayNosing(a, b);
+    const double apart = spacing(a, b), rise = std::abs(b.z - a.z);
+    const Eigen::Vector2d u = mid.direction();
+    for (const LineSegment& l : lines) {
+        if (std::abs(l.z - mid.z) > 0.25 * rise) continue;
+        if (std::abs(mid.distanceTo(l.centre())) > 0.25 * apart) continue;
+        if (std::abs(u.dot(l.centre() - mid.centre())) <= 0.5 * (mid.length() + l.length()))
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
 
 LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double z) {
     LineSegment m;
@@ -90,20 +105,16 @@ LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& en
 
 int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {
     if (edges.size() < 3) return 0;
-    std::vector<double> rises;
-    for (std::size_t i = 1; i < edges.size(); ++i)
+    std::vector<double> rises, runs;
+    for (std::size_t i = 1; i < edges.size(); ++i) {
         rises.push_back(std::abs(edges[i].z - edges[i - 1].z));
+        runs.push_back(spacing(edges[i - 1], edges[i]));
+    }
     const double median_rise = upperMedian(rises);
-    double run = 0.0;
-    const double aliased_unit = oneStepRiseOfAliasedChain(edges, rises, median_rise, run);
+    double run = upperMedian(runs);
+    const double aliased_unit = oneStepRiseOfAliasedChain(rises, runs, median_rise, run);
     const double rise = aliased_unit > 0.0 ? aliased_unit : median_rise;
     if (rise <= 0.0) return 0;
-    if (aliased_unit <= 0.0) {
-        std::vector<double> runs;
-        for (std::size_t i = 1; i < edges.size(); ++i)
-            runs.push_back(spacing(edges[i - 1], edges[i]));
-        run = upperMedian(runs);
-    }
     int inserted = 0;
     for (std::size_t i = 1; i < edges.size(); ++i) {
         const double ratio = std::abs(edges[i].z - edges[i - 1].z) / rise;
@@ -119,27 +130,6 @@ int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {
     }
     return inserted;
 }
-
-namespace {
-
-/// Whether one of `lines` lies where the nosing halfway between edges a and b would (within a
-/// quarter of their spacing of its line and of their rise of its height, beside its extent): then
-/// the pair is not two steps with the middle nosing unseen, whatever kept the search off it.
-bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a,
-                 const LineSegment& b) {
-    const LineSegment mid = halfwayNosing(a, b);
-    const double spacing = std::abs(a.distanceTo(b.centre())), rise = std::abs(b.z - a.z);
-    const Eigen::Vector2d u = mid.direction();
-    for (const LineSegment& l : lines) {
-        if (std::abs(l.z - mid.z) > 0.25 * rise) continue;
-        if (std::abs(mid.distanceTo(l.centre())) > 0.25 * spacing) continue;
-        if (std::abs(u.dot(l.centre() - mid.centre())) <= 0.5 * (mid.length() + l.length()))
-            return true;
-    }
-    return false;
-}
-
-}  // namespace
 
 bool putBackEveryOtherNosing(const std::vector<LineSegment>& lines,
                              std::vector<LineSegment>& edges) {

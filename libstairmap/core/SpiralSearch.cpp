@@ -70,23 +70,6 @@ std::vector<Radial> collectInliers(const SpiralLines& sl, const Helix& h, double
     return in;
 }
 
-bool fitAngleRate(const std::vector<Radial>& in, Helix& h);
-
-/// Least-squares axis (the point nearest to all inlier lines) and helix rate through it.
-bool refitHelix(const SpiralLines& sl, const std::vector<Radial>& in, Helix& h) {
-    Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
-    Eigen::Vector2d b = Eigen::Vector2d::Zero();
-    for (const Radial& r : in) {
-        const LineSegment& l = sl[r.index];
-        const Eigen::Vector2d n(std::cos(l.theta), std::sin(l.theta));
-        a += n * n.transpose();
-        b += n * l.rho;
-    }
-    if (std::abs(a.determinant()) < 1e-6) return false;
-    h.axis = a.ldlt().solve(b);
-    return fitAngleRate(in, h);
-}
-
 /// Unwraps each line's angle against the helix `h`, then fits phi = phi0 + omega (z - z0).
 bool fitAngleRate(const std::vector<Radial>& in, Helix& h) {
     double sz = 0, sp = 0, szz = 0, szp = 0;
@@ -102,6 +85,21 @@ bool fitAngleRate(const std::vector<Radial>& in, Helix& h) {
     h.omega = (n * szp - sz * sp) / den;
     h.phi0 = (sp - h.omega * sz) / n;
     return true;
+}
+
+/// Least-squares axis (the point nearest to all inlier lines) and helix rate through it.
+bool refitHelix(const SpiralLines& sl, const std::vector<Radial>& in, Helix& h) {
+    Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d b = Eigen::Vector2d::Zero();
+    for (const Radial& r : in) {
+        const LineSegment& l = sl[r.index];
+        const Eigen::Vector2d n(std::cos(l.theta), std::sin(l.theta));
+        a += n * n.transpose();
+        b += n * l.rho;
+    }
+    if (std::abs(a.determinant()) < 1e-6) return false;
+    h.axis = a.ldlt().solve(b);
+    return fitAngleRate(in, h);
 }
 
 /// One seen level: the highest inlier line at that height (a riser hit reads low).

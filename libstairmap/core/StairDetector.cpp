@@ -327,12 +327,14 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
             refused.clear();  // not a refusal after all
         }
     }
+    // The lines Algorithm 1's chains left, for the two searches below (neither marks lines used).
+    std::vector<LineSegment> rest;
+    if (deep_treads || pairs_apart)
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            if (!used[i]) rest.push_back(lines[i]);
     // Deep treads (LongTreads.h): the search again on the lines left, with runs up to
     // max_level_tread_depth_m; a chain beyond the usual bound counts where its treads are level.
     if (deep_treads) {
-        std::vector<LineSegment> rest;
-        for (std::size_t i = 0; i < lines.size(); ++i)
-            if (!used[i]) rest.push_back(lines[i]);
         DetectorParams deep = search;
         deep.max_step_depth_m = p.max_level_tread_depth_m;
         deep.min_slope_deg = p.min_level_tread_slope_deg;
@@ -366,9 +368,6 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     // Ring-aliased flights (DetectorParams::max_double_step_rise_m): the search again on the
     // lines left, for pairs two steps apart; the skipped nosings are put back halfway.
     if (pairs_apart) {
-        std::vector<LineSegment> rest;
-        for (std::size_t i = 0; i < lines.size(); ++i)
-            if (!used[i]) rest.push_back(lines[i]);
         DetectorParams two_steps = search;
         two_steps.min_step_height_m = 2 * p.min_step_height_m;
         two_steps.max_step_height_m = p.max_double_step_rise_m;
