@@ -21,8 +21,10 @@
 namespace stairmap {
 
 struct RayClearanceParams {
-    /// [m] points at least this far behind an edge's line (its riser hits' noise lies closer)...
-    double min_behind_m = 0.04;
+    /// [m] points at least this far behind an edge's line (its riser hits' noise lies closer:
+    /// 4 cm is two sigmas of an HDL-32's 2 cm range noise, and the riser's own top hit a few cm
+    /// behind gave dev r0258 a bound at the edge's height, 13 cm under its nosing)...
+    double min_behind_m = 0.06;
     /// [-] ...and at most this many runs behind it bound the edge
     double max_behind_runs = 2.0;
     /// [0..1] rays crossing the ends of an edge (this fraction of its length each) are left out:

@@ -106,6 +106,24 @@ TEST(RayClearance, ClearanceIsWhereTheRayToAPointBehindCrossesTheNosing) {
     EXPECT_TRUE(std::isinf(nosingClearance(cloud, edges, 0, 0.3)));
 }
 
+TEST(RayClearance, ARisersOwnTopHitsBehindItsLineBoundNothing) {
+    std::vector<LineSegment> edges(2);
+    for (int k = 0; k < 2; ++k) {
+        edges[k].start = {5.0 + 0.3 * k, -0.5};
+        edges[k].end = {5.0 + 0.3 * k, 0.5};
+        edges[k].z = -0.07 + 0.19 * k;
+    }
+    // The riser's highest ring (the edge's own height), its range noise (HDL-32: 2 cm) putting
+    // some hits 5 cm behind the edge's line: no ray crossed above the nosing there (dev r0258: a
+    // bound 6 mm over the edge, 13 cm under the nosing, made the flight's line infeasible).
+    PointCloud cloud;
+    for (int i = 0; i < 5; ++i) cloud.emplace_back(5.05f, -0.2f + 0.1f * i, -0.07f);
+    EXPECT_TRUE(std::isinf(nosingClearance(cloud, edges, 0, 0.3)));
+    // The next riser's hits, a run behind, still bound it.
+    for (int i = 0; i < 5; ++i) cloud.emplace_back(5.3f, -0.2f + 0.1f * i, 0.05f);
+    EXPECT_NEAR(nosingClearance(cloud, edges, 0, 0.3), 0.05 * 5.0 / 5.3, 1e-6);
+}
+
 TEST(RayClearance, AllEdgesInOnePassEqualEachEdgeAlone) {
     Flight f;
     const PointCloud cloud = scanFlight(f);
