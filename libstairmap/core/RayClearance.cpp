@@ -124,16 +124,28 @@ std::vector<double> nosingClearances(const PointCloud& cloud, const FlightBox& b
     return upper;
 }
 
-int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
-                           std::vector<LineSegment>& edges, const RayClearanceParams& p) {
-    if (edges.size() < 2 || !(rise > 0) || !(run > 0)) return 0;
+std::vector<double> edgeClearances(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                                   double rise, double run, const RayClearanceParams& p) {
+    if (edges.size() < 2 || !(rise > 0) || !(run > 0))
+        return std::vector<double>(edges.size(), kInfinity);
     double z_lo = kInfinity;
     for (const LineSegment& e : edges) z_lo = std::min(z_lo, e.z);
     const double reach = p.max_behind_runs * run + p.min_behind_m;
     const double z_hi = edges.back().z + (p.max_behind_runs + 2.0) * rise;
     // Points that can bound the edges: rays to anything higher clear the nosings by far.
     const FlightBox box = flightBox(edges, reach, z_lo - p.under_slack_m, z_hi);
-    const std::vector<double> upper = nosingClearances(cloud, box, edges, run, p);
+    return nosingClearances(cloud, box, edges, run, p);
+}
+
+int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
+                           std::vector<LineSegment>& edges, const RayClearanceParams& p) {
+    if (edges.size() < 2 || !(rise > 0) || !(run > 0)) return 0;
+    return fitEdgesToRayClearance(edgeClearances(cloud, edges, rise, run, p), rise, edges, p);
+}
+
+int fitEdgesToRayClearance(const std::vector<double>& upper, double rise,
+                           std::vector<LineSegment>& edges, const RayClearanceParams& p) {
+    if (edges.size() < 2 || upper.size() != edges.size() || !(rise > 0)) return 0;
     const int bounded = static_cast<int>(
         std::count_if(upper.begin(), upper.end(), [](double u) { return std::isfinite(u); }));
     if (bounded < p.min_bounded_edges) return 0;

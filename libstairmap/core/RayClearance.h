@@ -72,4 +72,13 @@ std::vector<double> nosingClearances(const PointCloud& cloud, const FlightBox& b
 int fitEdgesToRayClearance(const PointCloud& cloud, double rise, double run,
                            std::vector<LineSegment>& edges, const RayClearanceParams& p = {});
 
+/// The upper bounds fitEdgesToRayClearance fits inside: nosingClearances over the points that
+/// can bound the edges (max_behind_runs runs around them, up to two rises above the last).
+std::vector<double> edgeClearances(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                                   double rise, double run, const RayClearanceParams& p = {});
+
+/// fitEdgesToRayClearance with the upper bounds already measured (edgeClearances).
+int fitEdgesToRayClearance(const std::vector<double>& upper, double rise,
+                           std::vector<LineSegment>& edges, const RayClearanceParams& p = {});
+
 }  // namespace stairmap

@@ -14,17 +14,18 @@
 #include "core/LongTreads.h"
 #include "core/MissingNosings.h"
 #include "core/OverlappingFlights.h"
+#include "core/RayClearance.h"
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
-#include "core/StairPairExplain.h"
 #include "core/SpiralSearch.h"
-#include "core/TurningFlight.h"
+#include "core/StairPairExplain.h"
 #include "core/StairSearch.h"
-#include "core/StepExtent.h"
 #include "core/StaircaseGeometry.h"
+#include "core/StartSurface.h"
+#include "core/StepExtent.h"
 #include "core/TopView.h"
-#include "core/RayClearance.h"
 #include "core/TreadHeights.h"
+#include "core/TurningFlight.h"
 
 namespace stairmap {
 namespace {
@@ -164,22 +165,24 @@ void recordDirection(const std::vector<LineSegment>& lines, const std::vector<ch
     explainRefusedPairs(lines, used, dir, floor_z, p, debug.rejected);
 }
 
-/// A box around `edges` holding the boxes that raiseEdgesToTreads and then
-/// fitEdgesToRayClearance (default parameters) select their points with: either selects from
-/// the points of `cloud` in it exactly what it would select from the whole cloud. Edges keep
-/// their XY, and raiseEdgesToTreads lifts each by less than a rise, so the second box is known
-/// before the first step runs.
+/// A box around `edges` holding the boxes that raiseEdgesToTreads, startSurfaceHeight and
+/// edgeClearances (default parameters, `rise` and `run` the flight's) select their points with:
+/// each selects from the points of `cloud` in it exactly what it would select from the whole
+/// cloud. Edges keep their XY, and raiseEdgesToTreads lifts each by less than a rise, so the box
+/// is known before the first step runs.
 FlightBox bothCorrectionsBox(const std::vector<LineSegment>& edges, double rise, double run) {
     const TreadHeightParams tp;
     const RayClearanceParams rp;
-    constexpr double kSlack = 0.01;  // [m] beyond both boxes: no rounding decides a point
+    const StartSurfaceParams sp;
+    constexpr double kSlack = 0.01;  // [m] beyond all boxes: no rounding decides a point
     double z_lo = edges.front().z, z_hi = z_lo;
     for (const LineSegment& e : edges) {
         z_lo = std::min(z_lo, e.z);
         z_hi = std::max(z_hi, e.z);
     }
-    const double margin = std::max(run, rp.max_behind_runs * run + rp.min_behind_m) + kSlack;
-    const double below = std::max(tp.below_m, rp.under_slack_m) + kSlack;
+    const double margin =
+        std::max({run, rp.max_behind_runs * run + rp.min_behind_m, sp.to_runs * run}) + kSlack;
+    const double below = std::max({tp.below_m, rp.under_slack_m, rise - sp.min_deficit_m}) + kSlack;
     const double above = std::max(tp.max_raise_fraction, rp.max_behind_runs + 3.0) * rise + kSlack;
     return flightBox(edges, margin, z_lo - below, z_hi + above);
 }
@@ -196,19 +199,25 @@ bool mostlyInside(const PointCloud& cloud, const FlightBox& box) {
 }
 
 /// Sparse-cloud mode, ascending: edges read on riser tops are raised to the treads behind them
-/// (TreadHeights), all of them onto the line inside the bounds of the rays that cleared them
-/// (RayClearance), then the remaining low ones onto the flight's nosing line (RiserHits).
+/// (TreadHeights); then, when the first edge reads less than a rise above the surface in front of
+/// it, all of them onto the line from that surface inside the bounds of the rays that cleared
+/// them (StartSurface), else onto the line inside those bounds alone (RayClearance); then the
+/// remaining low ones onto the flight's nosing line (RiserHits).
 void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
                           std::vector<LineSegment>& edges) {
     if (dir == StairDirection::Ascending && edges.size() >= 2) {
         const Staircase probe = makeStaircase(edges, dir, 0.0);
+        const double rise = probe.step_height, run = probe.step_depth;
         const auto correctFrom = [&](const PointCloud& points) {
-            raiseEdgesToTreads(points, probe.step_height, probe.step_depth, edges);
-            fitEdgesToRayClearance(points, probe.step_height, probe.step_depth, edges);
+            raiseEdgesToTreads(points, rise, run, edges);
+            const std::vector<double> upper = edgeClearances(points, edges, rise, run);
+            const std::optional<double> start = startSurfaceHeight(points, edges, rise, run);
+            if (!start || !fitEdgesOnStartSurface(*start, upper, rise, edges))
+                fitEdgesToRayClearance(upper, rise, edges);
         };
-        // Both steps look only at the points near the flight, each in its own box: the points in
-        // a box holding both, or the whole cloud when that would crop little (same result).
-        const FlightBox box = bothCorrectionsBox(edges, probe.step_height, probe.step_depth);
+        // The steps look only at the points near the flight, each in its own box: the points in
+        // a box holding all of them, or the whole cloud when that would crop little (same result).
+        const FlightBox box = bothCorrectionsBox(edges, rise, run);
         if (mostlyInside(cloud, box))
             correctFrom(cloud);
         else

@@ -1,0 +1,97 @@
+#include "core/StartSurface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace stairmap {
+
+std::optional<double> startSurfaceHeight(const PointCloud& cloud,
+                                         const std::vector<LineSegment>& edges, double rise,
+                                         double run, const StartSurfaceParams& p) {
+    if (edges.size() < 2 || !(run > 0) || !(rise > p.min_deficit_m + p.min_below_edge_m))
+        return std::nullopt;
+    const LineSegment& first = edges.front();
+    const Eigen::Vector2d c = first.centre(), u = first.direction();
+    const Eigen::Vector2d in_front = 2.0 * c - edges.back().centre();  // one flight's length
+    const Eigen::Vector2d up = first.normalAwayFrom(in_front);
+    // Across the flight: where most edges reach (the median of their ends along the first edge;
+    // a far flight's first edge, a riser hit, is often a short piece), less the ends.
+    std::vector<double> lo, hi;
+    for (const LineSegment& e : edges) {
+        const double a = u.dot(e.start - c), b = u.dot(e.end - c);
+        lo.push_back(std::min(a, b));
+        hi.push_back(std::max(a, b));
+    }
+    std::nth_element(lo.begin(), lo.begin() + lo.size() / 2, lo.end());
+    std::nth_element(hi.begin(), hi.begin() + hi.size() / 2, hi.end());
+    const double t_lo0 = lo[lo.size() / 2], t_hi0 = hi[hi.size() / 2];
+    const double trim = p.end_fraction * (t_hi0 - t_lo0);
+    const double t_lo = t_lo0 + trim, t_hi = t_hi0 - trim;
+    const double s_lo = -std::max(p.to_runs * run, p.min_reach_m), s_hi = -p.from_runs * run;
+    const double z_lo = first.z - (rise - p.min_deficit_m), z_hi = first.z - p.min_below_edge_m;
+    struct Sample {
+        double z, t, s;
+    };
+    std::vector<Sample> window;
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!(q.z() >= z_lo && q.z() <= z_hi)) continue;  // NaN too
+        const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
+        const double s = up.dot(d), t = u.dot(d);
+        if (s < s_lo || s > s_hi || t < t_lo || t > t_hi) continue;
+        window.push_back({q.z(), t, s});
+    }
+    std::sort(window.begin(), window.end(),
+              [](const Sample& a, const Sample& b) { return a.z < b.z; });
+    // Flat bands from the lowest up, each [z_i, z_i + band_m] starting past the last one taken.
+    const int n = static_cast<int>(window.size());
+    const double min_spread = p.min_spread_fraction * (t_hi - t_lo);
+    std::optional<double> nearest;
+    double nearest_s = -std::numeric_limits<double>::max();
+    std::vector<double> along;
+    for (int i = 0; i + p.min_points <= n; ++i) {
+        int j = i;
+        while (j < n && window[j].z <= window[i].z + p.band_m) ++j;
+        if (j - i < p.min_points) continue;
+        double t_min = std::numeric_limits<double>::max(), t_max = -t_min;
+        along.clear();
+        for (int k = i; k < j; ++k) {
+            t_min = std::min(t_min, window[k].t);
+            t_max = std::max(t_max, window[k].t);
+            along.push_back(window[k].s);
+        }
+        if (t_max - t_min < min_spread) continue;
+        std::nth_element(along.begin(), along.begin() + along.size() / 2, along.end());
+        if (along[along.size() / 2] > nearest_s) {  // s < 0 in front: larger is nearer
+            nearest_s = along[along.size() / 2];
+            nearest = window[(i + j) / 2].z;  // the band's median height
+        }
+        i = j - 1;
+    }
+    return nearest;
+}
+
+bool fitEdgesOnStartSurface(double start_z, const std::vector<double>& upper, double rise,
+                            std::vector<LineSegment>& edges, const StartSurfaceParams& p) {
+    if (edges.empty() || upper.size() != edges.size()) return false;
+    if (edges.front().z >= start_z + rise - p.min_deficit_m) return false;  // not low
+    // Z_k = start_z + (k + 1) b within [z_k - tol, upper_k + tol] bounds b from both sides.
+    double b_lo = p.min_rise_m, b_hi = p.max_rise_m;
+    bool bounded_above = false;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const double steps = static_cast<double>(k + 1);
+        if (edges[k].num_points > 0)
+            b_lo = std::max(b_lo, (edges[k].z - p.tolerance_m - start_z) / steps);
+        if (std::isfinite(upper[k])) {
+            b_hi = std::min(b_hi, (upper[k] + p.tolerance_m - start_z) / steps);
+            bounded_above = true;
+        }
+    }
+    if (!bounded_above || b_hi < b_lo || b_hi - b_lo > p.max_rise_span_m) return false;
+    const double b = 0.5 * (b_lo + b_hi);
+    for (std::size_t k = 0; k < edges.size(); ++k)
+        edges[k].z = start_z + static_cast<double>(k + 1) * b;
+    return true;
+}
+
+}  // namespace stairmap

@@ -1,0 +1,202 @@
+// The surface a flight starts from pins its nosings' line: a far sparse LiDAR's riser-hit edges
+// (each up to one ring spacing low) move onto start + (k + 1) rise, the rise bounded by the edges
+// from below and the rays that cleared them from above.
+#include "core/StartSurface.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/RayClearance.h"
+#include "core/StairDetector.h"
+
+namespace stairmap {
+namespace {
+
+/// A closed-riser flight along +x on a floor, seen by a level 16-ring LiDAR (2 deg apart, a
+/// VLP-16) at the origin: nosing k at x0 + k run, floor_z + (k + 1) rise. At 4.6 m the rings
+/// lie 16 cm apart on a riser, close to the rise: every step is hit at about the same phase.
+struct Flight {
+    double x0 = 4.6, run = 0.30, rise = 0.18, floor_z = -0.5;
+    int steps = 6;
+    double nosingZ(int k) const { return floor_z + (k + 1) * rise; }
+    double nosingX(int k) const { return x0 + k * run; }
+    double surface(double x) const {
+        if (x < x0) return floor_z;
+        const int k = std::min(steps - 1, static_cast<int>(std::floor((x - x0) / run)));
+        return nosingZ(k);
+    }
+};
+
+/// First hit of every ray (rings -15..15 deg, azimuths +-6 deg) on the flight's profile.
+PointCloud scanFlight(const Flight& f) {
+    PointCloud cloud;
+    for (int ring = 0; ring < 16; ++ring) {
+        const double slope = std::tan((-15.0 + 2.0 * ring) * M_PI / 180.0);
+        for (double az = -6.0; az <= 6.0; az += 0.2) {
+            const double c = std::cos(az * M_PI / 180.0), s = std::sin(az * M_PI / 180.0);
+            for (double r = 0.5; r < 12.0; r += 0.001) {
+                const double x = r * c, z = slope * r;
+                if (z <= f.surface(x)) {
+                    cloud.emplace_back(x, r * s, z);
+                    break;
+                }
+            }
+        }
+    }
+    return cloud;
+}
+
+/// Edge k as the top view finds it: at the riser, at the height of its highest hit.
+LineSegment riserTopEdge(const PointCloud& cloud, const Flight& f, int k) {
+    double top = -std::numeric_limits<double>::infinity();
+    for (const auto& q : cloud)
+        if (std::abs(q.x() - f.nosingX(k)) < 0.01 && std::abs(q.y()) < 0.45 && q.z() < f.nosingZ(k))
+            top = std::max(top, static_cast<double>(q.z()));
+    LineSegment l;
+    l.start = {f.nosingX(k), -0.45};
+    l.end = {f.nosingX(k), 0.45};
+    l.z = top;
+    l.rho = f.nosingX(k);
+    l.num_points = 20;
+    return l;
+}
+
+std::vector<LineSegment> riserTopEdges(const PointCloud& cloud, const Flight& f) {
+    std::vector<LineSegment> edges;
+    for (int k = 0; k < f.steps - 1; ++k) edges.push_back(riserTopEdge(cloud, f, k));
+    return edges;
+}
+
+double measuredRise(const std::vector<LineSegment>& edges) {
+    return (edges.back().z - edges.front().z) / static_cast<double>(edges.size() - 1);
+}
+
+TEST(StartSurface, FarFlightEdgesMoveOntoTheNosingsFromTheFloorInFront) {
+    const Flight f;
+    const PointCloud cloud = scanFlight(f);
+    std::vector<LineSegment> edges = riserTopEdges(cloud, f);
+    double worst_before = 0;
+    for (int k = 0; k < f.steps - 1; ++k) {
+        ASSERT_TRUE(std::isfinite(edges[k].z)) << "riser " << k << " not hit";
+        worst_before = std::max(worst_before, f.nosingZ(k) - edges[k].z);
+    }
+    ASSERT_GT(worst_before, 0.06);  // the case this fixes: riser hits well under their nosings
+    const double rise = measuredRise(edges);
+    // The rays' bounds alone pin nothing here (the rings in step with the rise).
+    std::vector<LineSegment> bounds_only = edges;
+    fitEdgesToRayClearance(cloud, rise, f.run, bounds_only);
+    double worst_bounds_only = 0;
+    for (int k = 0; k < f.steps - 1; ++k)
+        worst_bounds_only = std::max(worst_bounds_only, std::abs(f.nosingZ(k) - bounds_only[k].z));
+    EXPECT_GT(worst_bounds_only, 0.05);
+
+    const std::optional<double> start = startSurfaceHeight(cloud, edges, rise, f.run);
+    ASSERT_TRUE(start.has_value());
+    EXPECT_NEAR(*start, f.floor_z, 0.01);
+    const std::vector<double> upper = edgeClearances(cloud, edges, rise, f.run);
+    ASSERT_TRUE(fitEdgesOnStartSurface(*start, upper, rise, edges));
+    for (int k = 0; k < f.steps - 1; ++k)
+        EXPECT_NEAR(edges[k].z, f.nosingZ(k), 0.03) << "edge " << k;
+    EXPECT_NEAR(measuredRise(edges), f.rise, 0.01);
+}
+
+TEST(StartSurface, TheDetectorReportsAFarFlightAtItsNosings) {
+    Flight f;
+    f.steps = 7;
+    const PointCloud cloud = scanFlight(f);
+    const DetectionResult r = StairDetector().detect(cloud, f.floor_z);
+    ASSERT_EQ(r.staircases.size(), 1u);
+    const Staircase& s = r.staircases.front();
+    EXPECT_NEAR(s.step_height, f.rise, 0.01);
+    ASSERT_GE(s.steps.size(), 4u);
+    EXPECT_NEAR(s.steps.front().centre().x(), f.nosingX(0), 0.05);
+    for (std::size_t k = 0; k < s.steps.size(); ++k)
+        EXPECT_NEAR(s.steps[k].centre().z(), f.nosingZ(static_cast<int>(k)), 0.035) << "step " << k;
+}
+
+/// Points of a flat band `dz` under the first edge, `s_from`..`s_to` in front of it (towards the
+/// robot at -x), over `half_width` either side of the flight's axis.
+void addBand(PointCloud& cloud, double z, double s_from, double s_to, double half_width,
+             double x_edge) {
+    for (double s = s_from; s <= s_to + 1e-9; s += 0.05)
+        for (double y = -half_width; y <= half_width + 1e-9; y += 0.05)
+            cloud.emplace_back(static_cast<float>(x_edge - s), static_cast<float>(y),
+                               static_cast<float>(z));
+}
+
+std::vector<LineSegment> straightEdges(double x0, double z0, double rise, double run, int n) {
+    std::vector<LineSegment> edges;
+    for (int k = 0; k < n; ++k) {
+        LineSegment l;
+        l.start = {x0 + k * run, -0.5};
+        l.end = {x0 + k * run, 0.5};
+        l.z = z0 + k * rise;
+        l.rho = x0 + k * run;
+        l.num_points = 10;
+        edges.push_back(l);
+    }
+    return edges;
+}
+
+TEST(StartSurface, TheNearestFlatBandInFrontIsTheStart) {
+    const std::vector<LineSegment> edges = straightEdges(3.0, -0.15, 0.17, 0.3, 4);
+    PointCloud cloud;
+    EXPECT_FALSE(startSurfaceHeight(cloud, edges, 0.4, 0.3).has_value());  // nothing seen in front
+    addBand(cloud, -0.5, 0.6, 0.8, 0.4, 3.0);  // the floor in front of a platform
+    ASSERT_TRUE(startSurfaceHeight(cloud, edges, 0.4, 0.3).has_value());
+    EXPECT_NEAR(*startSurfaceHeight(cloud, edges, 0.4, 0.3), -0.5, 1e-6);
+    // A flight of 0.2 m rises could not start there with its first edge at -0.15 (a nosing one
+    // rise above the floor would lie at -0.3): not a start that makes the edge read low.
+    EXPECT_FALSE(startSurfaceHeight(cloud, edges, 0.2, 0.3).has_value());
+    addBand(cloud, -0.32, 0.1, 0.5, 0.4, 3.0);  // the platform the flight starts from
+    EXPECT_NEAR(*startSurfaceHeight(cloud, edges, 0.4, 0.3), -0.32, 1e-6);
+    // A box on the platform (narrow) and points without height change nothing.
+    PointCloud more = cloud;
+    for (int i = 0; i < 6; ++i) more.emplace_back(2.8f, 0.01f * i, -0.25f);
+    more.emplace_back(2.8f, 0.0f, std::nanf(""));
+    more.emplace_back(std::nanf(""), 0.0f, -0.32f);
+    EXPECT_NEAR(*startSurfaceHeight(more, edges, 0.4, 0.3), -0.32, 1e-6);
+    // Beside the flight (beyond its width) nothing counts.
+    PointCloud beside;
+    addBand(beside, -0.5, 0.1, 0.8, 0.3, 3.0);
+    for (auto& q : beside) q.y() += 1.5f;
+    EXPECT_FALSE(startSurfaceHeight(beside, edges, 0.4, 0.3).has_value());
+}
+
+TEST(StartSurface, EdgesMoveOnlyWhenLowAndBoundedOnALine) {
+    // True nosings: start -0.5, rise 0.18 -> -0.32, -0.14, 0.04, 0.22. Riser hits 2-12 cm low.
+    std::vector<LineSegment> low = straightEdges(4.0, -0.32, 0.18, 0.3, 4);
+    low[0].z -= 0.08;
+    low[1].z -= 0.1;
+    low[2].z -= 0.12;
+    low[3].z -= 0.02;
+    const std::vector<double> upper = {-0.30, -0.12, 0.06, std::numeric_limits<double>::infinity()};
+    const double rise = measuredRise(low);
+    std::vector<LineSegment> edges = low;
+    ASSERT_TRUE(fitEdgesOnStartSurface(-0.5, upper, rise, edges));
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(edges[k].z, -0.5 + (k + 1) * 0.18, 0.01) << k;
+
+    // The first edge a rise above the start: it is a nosing, nothing moves.
+    std::vector<LineSegment> level = straightEdges(4.0, -0.32, 0.18, 0.3, 4);
+    EXPECT_FALSE(fitEdgesOnStartSurface(-0.5, upper, 0.18, level));
+    EXPECT_EQ(level[0].z, -0.32);
+    // No upper bound at all, or bounds no line from the start fits, or too loose: unchanged.
+    const double inf = std::numeric_limits<double>::infinity();
+    edges = low;
+    EXPECT_FALSE(fitEdgesOnStartSurface(-0.5, {inf, inf, inf, inf}, rise, edges));
+    EXPECT_FALSE(fitEdgesOnStartSurface(-0.5, {-0.30, -0.25, 0.06, inf}, rise, edges));
+    EXPECT_FALSE(fitEdgesOnStartSurface(-0.5, {0.5, inf, inf, inf}, rise, edges));
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(edges[k].z, low[k].z);
+    EXPECT_FALSE(fitEdgesOnStartSurface(-0.5, {-0.3}, rise, edges));  // sizes differ
+    // A put-back edge (no points) is no lower bound: set high, it does not block the fit.
+    edges = low;
+    edges[2].z = 0.2;
+    edges[2].num_points = 0;
+    EXPECT_TRUE(fitEdgesOnStartSurface(-0.5, upper, rise, edges));
+    EXPECT_NEAR(edges[2].z, 0.04, 0.01);
+}
+
+}  // namespace
+}  // namespace stairmap
