@@ -200,10 +200,10 @@ bool mostlyInside(const PointCloud& cloud, const FlightBox& box) {
 
 /// Sparse-cloud mode, ascending: edges read on riser tops are raised to the treads behind them
 /// (TreadHeights); then, when the first edge reads less than a rise above the surface in front of
-/// it, all of them onto the line from that surface inside the bounds of the rays that cleared
-/// them (StartSurface), else onto the line inside those bounds alone (RayClearance); then the
-/// remaining low ones onto the flight's nosing line (RiserHits).
-void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
+/// it (or the robot's floor at floor_z), all of them onto the line from that surface inside the
+/// bounds of the rays that cleared them (StartSurface), else onto the line inside those bounds
+/// alone (RayClearance); then the remaining low ones onto the flight's nosing line (RiserHits).
+void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir, double floor_z,
                           std::vector<LineSegment>& edges) {
     if (dir == StairDirection::Ascending && edges.size() >= 2) {
         const Staircase probe = makeStaircase(edges, dir, 0.0);
@@ -211,7 +211,7 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir,
         const auto correctFrom = [&](const PointCloud& points) {
             raiseEdgesToTreads(points, rise, run, edges);
             const std::vector<double> upper = edgeClearances(points, edges, rise, run);
-            const std::optional<double> start = startSurfaceHeight(points, edges, rise, run);
+            const std::optional<double> start = lowEdgesStart(points, edges, rise, run, floor_z);
             if (!start || !fitEdgesOnStartSurface(*start, upper, rise, edges))
                 fitEdgesToRayClearance(upper, rise, edges);
         };
@@ -294,7 +294,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     };
     // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.
     const auto correct = [&](std::vector<LineSegment>& edges) {
-        if (p.edge_height_tolerance_m > 0) correctRiserTopEdges(cloud, dir, edges);
+        if (p.edge_height_tolerance_m > 0) correctRiserTopEdges(cloud, dir, floor_z, edges);
     };
     for (const auto& chain : chains) {
         std::vector<LineSegment> edges = edgesOf(lines, chain);

@@ -71,6 +71,16 @@ std::optional<double> startSurfaceHeight(const PointCloud& cloud,
     return nearest;
 }
 
+std::optional<double> lowEdgesStart(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                                    double rise, double run, double floor_z,
+                                    const StartSurfaceParams& p) {
+    if (const auto seen = startSurfaceHeight(cloud, edges, rise, run, p)) return seen;
+    if (edges.empty()) return std::nullopt;
+    const double above_floor = edges.front().z - floor_z;
+    if (above_floor >= p.min_below_edge_m && above_floor <= rise - p.min_deficit_m) return floor_z;
+    return std::nullopt;
+}
+
 bool fitEdgesOnStartSurface(double start_z, const std::vector<double>& upper, double rise,
                             std::vector<LineSegment>& edges, const StartSurfaceParams& p) {
     if (edges.empty() || upper.size() != edges.size()) return false;

@@ -62,6 +62,16 @@ std::optional<double> startSurfaceHeight(const PointCloud& cloud,
                                          const std::vector<LineSegment>& edges, double rise,
                                          double run, const StartSurfaceParams& params = {});
 
+/// The surface a flight whose first edge reads low starts from: the one seen in front of it
+/// (startSurfaceHeight), else the robot's floor at `floor_z` [m] when it lies in the same band
+/// under the first edge. A flight's first nosing lies a rise above the surface it starts from; no
+/// surface but the floor lies in that band (a raised platform of a few cm, a pit shallower than a
+/// rise are no stairs' starts), so such a first edge is a riser hit of a flight from the floor. A
+/// far view's rings may see the floor beside the flight but not in front of it (dev2 r0070).
+std::optional<double> lowEdgesStart(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                                    double rise, double run, double floor_z,
+                                    const StartSurfaceParams& params = {});
+
 /// Moves `edges` (one ascending flight, consecutive steps, real z; `rise` [m] its measured rise)
 /// onto the line Z_k = start_z + (k + 1) b when the first edge reads low (below start_z + rise by
 /// more than min_deficit_m). b is the centre of the rises for which every measured edge (num_points

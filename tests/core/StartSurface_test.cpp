@@ -102,10 +102,19 @@ TEST(StartSurface, FarFlightEdgesMoveOntoTheNosingsFromTheFloorInFront) {
     EXPECT_NEAR(measuredRise(edges), f.rise, 0.01);
 }
 
-TEST(StartSurface, TheDetectorReportsAFarFlightAtItsNosings) {
+/// The detector on a far flight's ring scan, with or without the floor right in front of it.
+class FarFlight : public testing::TestWithParam<bool> {};
+
+TEST_P(FarFlight, TheDetectorReportsItAtItsNosings) {
     Flight f;
     f.steps = 7;
-    const PointCloud cloud = scanFlight(f);
+    PointCloud cloud = scanFlight(f);
+    if (!GetParam()) {  // the floor in front unseen (a far view's rings see it only beside)
+        PointCloud kept;
+        for (const auto& q : cloud)
+            if (!(q.x() > f.x0 - 1.0 && q.x() < f.x0 - 0.02)) kept.push_back(q);
+        cloud = kept;
+    }
     const DetectionResult r = StairDetector().detect(cloud, f.floor_z);
     ASSERT_EQ(r.staircases.size(), 1u);
     const Staircase& s = r.staircases.front();
@@ -115,6 +124,8 @@ TEST(StartSurface, TheDetectorReportsAFarFlightAtItsNosings) {
     for (std::size_t k = 0; k < s.steps.size(); ++k)
         EXPECT_NEAR(s.steps[k].centre().z(), f.nosingZ(static_cast<int>(k)), 0.035) << "step " << k;
 }
+
+INSTANTIATE_TEST_SUITE_P(FloorInFront, FarFlight, testing::Values(true, false));
 
 /// Points of a flat band `dz` under the first edge, `s_from`..`s_to` in front of it (towards the
 /// robot at -x), over `half_width` either side of the flight's axis.
@@ -163,6 +174,22 @@ TEST(StartSurface, TheNearestFlatBandInFrontIsTheStart) {
     addBand(beside, -0.5, 0.1, 0.8, 0.3, 3.0);
     for (auto& q : beside) q.y() += 1.5f;
     EXPECT_FALSE(startSurfaceHeight(beside, edges, 0.4, 0.3).has_value());
+}
+
+TEST(StartSurface, UnseenInFrontTheRobotsFloorIsTheStartOfAFirstEdgeTooLowForANosing) {
+    const std::vector<LineSegment> edges = straightEdges(3.0, -0.42, 0.2, 0.3, 4);
+    const PointCloud nothing_in_front;
+    // 8 cm above the floor at -0.5: no nosing of a 0.2 m rise from any surface lies there.
+    ASSERT_TRUE(lowEdgesStart(nothing_in_front, edges, 0.2, 0.3, -0.5).has_value());
+    EXPECT_EQ(*lowEdgesStart(nothing_in_front, edges, 0.2, 0.3, -0.5), -0.5);
+    // A rise above the floor: a nosing, nothing reads low.
+    EXPECT_FALSE(lowEdgesStart(nothing_in_front, edges, 0.2, 0.3, -0.62).has_value());
+    // Under the floor's height: not a riser hit of a flight from the floor either.
+    EXPECT_FALSE(lowEdgesStart(nothing_in_front, edges, 0.2, 0.3, -0.4).has_value());
+    // A surface seen in front comes first.
+    PointCloud platform;
+    addBand(platform, -0.45, 0.1, 0.5, 0.4, 3.0);
+    EXPECT_NEAR(*lowEdgesStart(platform, edges, 0.2, 0.3, -0.5), -0.45, 1e-6);
 }
 
 TEST(StartSurface, EdgesMoveOnlyWhenLowAndBoundedOnALine) {
