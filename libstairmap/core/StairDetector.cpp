@@ -182,7 +182,8 @@ FlightBox bothCorrectionsBox(const std::vector<LineSegment>& edges, double rise,
     }
     const double margin =
         std::max({run, rp.max_behind_runs * run + rp.min_behind_m, sp.to_runs * run}) + kSlack;
-    const double below = std::max({tp.below_m, rp.under_slack_m, rise - sp.min_deficit_m}) + kSlack;
+    const double below =
+        std::max({tp.below_m, rp.under_slack_m, rise + sp.below_rise_margin_m}) + kSlack;
     const double above = std::max(tp.max_raise_fraction, rp.max_behind_runs + 3.0) * rise + kSlack;
     return flightBox(edges, margin, z_lo - below, z_hi + above);
 }

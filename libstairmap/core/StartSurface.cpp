@@ -1,10 +1,17 @@
 #include "core/StartSurface.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 namespace stairmap {
+namespace {
+
+/// [-] lateral bins across the flight for a band's spread (min_spread_fraction of them)
+constexpr int kSpreadBins = 20;
+
+}  // namespace
 
 std::optional<double> startSurfaceHeight(const PointCloud& cloud,
                                          const std::vector<LineSegment>& edges, double rise,
@@ -29,46 +36,50 @@ std::optional<double> startSurfaceHeight(const PointCloud& cloud,
     const double trim = p.end_fraction * (t_hi0 - t_lo0);
     const double t_lo = t_lo0 + trim, t_hi = t_hi0 - trim;
     const double s_lo = -std::max(p.to_runs * run, p.min_reach_m), s_hi = -p.from_runs * run;
-    const double z_lo = first.z - (rise - p.min_deficit_m), z_hi = first.z - p.min_below_edge_m;
+    const double z_lo = first.z - rise - p.below_rise_margin_m;
+    const double z_hi = first.z - p.min_below_edge_m;
+    const double width = t_hi - t_lo;
+    if (!(width > 0)) return std::nullopt;
     struct Sample {
-        double z, t, s;
+        double z;
+        int bin;  ///< across the flight, 0..kSpreadBins-1
     };
     std::vector<Sample> window;
     for (const Eigen::Vector3f& q : cloud) {
         if (!(q.z() >= z_lo && q.z() <= z_hi)) continue;  // NaN too
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = up.dot(d), t = u.dot(d);
-        if (s < s_lo || s > s_hi || t < t_lo || t > t_hi) continue;
-        window.push_back({q.z(), t, s});
+        if (!(s >= s_lo && s <= s_hi && t >= t_lo && t <= t_hi)) continue;  // NaN too
+        const int bin =
+            std::min(kSpreadBins - 1, static_cast<int>((t - t_lo) / width * kSpreadBins));
+        window.push_back({q.z(), bin});
     }
     std::sort(window.begin(), window.end(),
               [](const Sample& a, const Sample& b) { return a.z < b.z; });
-    // Flat bands from the lowest up, each [z_i, z_i + band_m] starting past the last one taken.
+    // The band [z_i, z_i + band_m] holding the most points (spread across the flight), found by
+    // sliding it up the sorted heights with a count of its points per lateral bin.
     const int n = static_cast<int>(window.size());
-    const double min_spread = p.min_spread_fraction * (t_hi - t_lo);
-    std::optional<double> nearest;
-    double nearest_s = -std::numeric_limits<double>::max();
-    std::vector<double> along;
-    for (int i = 0; i + p.min_points <= n; ++i) {
-        int j = i;
-        while (j < n && window[j].z <= window[i].z + p.band_m) ++j;
-        if (j - i < p.min_points) continue;
-        double t_min = std::numeric_limits<double>::max(), t_max = -t_min;
-        along.clear();
-        for (int k = i; k < j; ++k) {
-            t_min = std::min(t_min, window[k].t);
-            t_max = std::max(t_max, window[k].t);
-            along.push_back(window[k].s);
+    const int min_bins = static_cast<int>(std::ceil(p.min_spread_fraction * kSpreadBins));
+    std::array<int, kSpreadBins> count{};
+    std::optional<double> best;
+    int best_points = p.min_points - 1;
+    for (int i = 0, j = 0; i < n; ++i) {
+        while (j < n && window[j].z <= window[i].z + p.band_m) ++count[window[j++].bin];
+        if (j - i > best_points) {
+            int first_bin = kSpreadBins, last_bin = -1;
+            for (int k = 0; k < kSpreadBins; ++k) {
+                if (count[k] == 0) continue;
+                first_bin = std::min(first_bin, k);
+                last_bin = k;
+            }
+            if (last_bin - first_bin + 1 >= min_bins) {
+                best_points = j - i;
+                best = window[(i + j) / 2].z;  // the band's median height
+            }
         }
-        if (t_max - t_min < min_spread) continue;
-        std::nth_element(along.begin(), along.begin() + along.size() / 2, along.end());
-        if (along[along.size() / 2] > nearest_s) {  // s < 0 in front: larger is nearer
-            nearest_s = along[along.size() / 2];
-            nearest = window[(i + j) / 2].z;  // the band's median height
-        }
-        i = j - 1;
+        --count[window[i].bin];
     }
-    return nearest;
+    return best;
 }
 
 std::optional<double> lowEdgesStart(const PointCloud& cloud, const std::vector<LineSegment>& edges,

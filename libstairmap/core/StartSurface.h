@@ -34,8 +34,12 @@ struct StartSurfaceParams {
     /// ring crossing the floor spans most of it; a post, a box top do not)
     double min_spread_fraction = 0.3;
     /// [m] the surface lies at least this below the first edge (a riser hit may lie just above
-    /// the surface it rises from: dev2 r0241, 2 cm)
+    /// the surface it rises from: dev2 r0241, 2 cm) ...
     double min_below_edge_m = 0.01;
+    /// [m] ... and the window reaches this far below one rise under it: a noisy surface a rise
+    /// down is seen whole, not by the upper tail of its noise (a depth camera's floor, dev
+    /// r0279: its tail read as a start 3 cm above it)
+    double below_rise_margin_m = 0.03;
     /// [m] the first edge reads low when it lies more than this under start + rise (noise of a
     /// measured rise): the edges are then riser hits and move onto the anchored line
     double min_deficit_m = 0.03;
@@ -48,16 +52,17 @@ struct StartSurfaceParams {
 };
 
 /// Height [m] of the surface in front of the first edge of `edges` (one ascending flight,
-/// consecutive steps, real z; `rise`, `run` [m] the flight's as measured) when it makes that edge
-/// read low: between min_below_edge_m and rise - min_deficit_m under it (a lower surface is one a
-/// nosing lies a rise above). Of the flat bands there (band_m, at least min_points points spread
-/// along the edge; taken from the lowest up, none overlapping) in the window (from_runs..to_runs
-/// runs or min_reach_m in front of the first edge, across the flight's width less the ends), the
-/// one nearest to the riser (the median distance of its points); its median height. Nearest: a
-/// platform the flight starts from lies between it and the floor in front of the platform. The
-/// flight's width: the median of the edges' ends along the first edge (a far flight's first edge,
-/// a riser hit, is often a short piece). nullopt when no such band is seen. Non-finite points are
-/// ignored. One pass over the cloud, then a sort of the window's points.
+/// consecutive steps, real z; `rise`, `run` [m] the flight's as measured): of the points in the
+/// window (from_runs..to_runs runs or min_reach_m in front of the first edge, across the flight's
+/// width less the ends, from min_below_edge_m to a rise and below_rise_margin_m under the first
+/// edge), the flat band (band_m) holding the most, at least min_points spread across
+/// min_spread_fraction of the width; its median height. The most: the surface a flight starts from
+/// fills the area in front of it; a real elevation map smears a riser's foot into a band of
+/// intermediate heights there (the ANYmal entrance: 6 cm above the landing), and a noisy floor's
+/// tail forms a band of its own. The flight's width: the median of the edges' ends along the
+/// first edge (a far flight's first edge, a riser hit, is often a short piece). nullopt when no
+/// such band is seen. Non-finite points are ignored. One pass over the cloud, then a sort of the
+/// window's points.
 std::optional<double> startSurfaceHeight(const PointCloud& cloud,
                                          const std::vector<LineSegment>& edges, double rise,
                                          double run, const StartSurfaceParams& params = {});

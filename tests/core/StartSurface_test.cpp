@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "core/RayClearance.h"
 #include "core/StairDetector.h"
@@ -151,20 +152,22 @@ std::vector<LineSegment> straightEdges(double x0, double z0, double rise, double
     return edges;
 }
 
-TEST(StartSurface, TheNearestFlatBandInFrontIsTheStart) {
+TEST(StartSurface, TheFlatBandFillingTheFrontIsTheStart) {
     const std::vector<LineSegment> edges = straightEdges(3.0, -0.15, 0.17, 0.3, 4);
     PointCloud cloud;
     EXPECT_FALSE(startSurfaceHeight(cloud, edges, 0.4, 0.3).has_value());  // nothing seen in front
     addBand(cloud, -0.5, 0.6, 0.8, 0.4, 3.0);  // the floor in front of a platform
     ASSERT_TRUE(startSurfaceHeight(cloud, edges, 0.4, 0.3).has_value());
     EXPECT_NEAR(*startSurfaceHeight(cloud, edges, 0.4, 0.3), -0.5, 1e-6);
-    // A flight of 0.2 m rises could not start there with its first edge at -0.15 (a nosing one
-    // rise above the floor would lie at -0.3): not a start that makes the edge read low.
+    // More than a rise (0.2 m) and 3 cm under the first edge: outside the window.
     EXPECT_FALSE(startSurfaceHeight(cloud, edges, 0.2, 0.3).has_value());
     addBand(cloud, -0.32, 0.1, 0.5, 0.4, 3.0);  // the platform the flight starts from
     EXPECT_NEAR(*startSurfaceHeight(cloud, edges, 0.4, 0.3), -0.32, 1e-6);
-    // A box on the platform (narrow) and points without height change nothing.
+    // A riser's foot smeared by an elevation map (one row of cells at an intermediate height
+    // right in front of it), a box on the platform (narrow) and points without height change
+    // nothing.
     PointCloud more = cloud;
+    addBand(more, -0.26, 0.08, 0.08, 0.4, 3.0);
     for (int i = 0; i < 6; ++i) more.emplace_back(2.8f, 0.01f * i, -0.25f);
     more.emplace_back(2.8f, 0.0f, std::nanf(""));
     more.emplace_back(std::nanf(""), 0.0f, -0.32f);
@@ -174,6 +177,25 @@ TEST(StartSurface, TheNearestFlatBandInFrontIsTheStart) {
     addBand(beside, -0.5, 0.1, 0.8, 0.3, 3.0);
     for (auto& q : beside) q.y() += 1.5f;
     EXPECT_FALSE(startSurfaceHeight(beside, edges, 0.4, 0.3).has_value());
+}
+
+TEST(StartSurface, ANoisyFloorIsSeenWholeNotByTheTailOfItsNoise) {
+    // A depth camera's floor at -0.5 (1.5 cm noise) in front of a flight of 0.11 m rises whose
+    // first edge reads 1 cm low: the floor, not its upper tail, is the start, and nothing moves.
+    const std::vector<LineSegment> edges = straightEdges(3.0, -0.40, 0.11, 0.3, 4);
+    PointCloud cloud;
+    std::mt19937 rng(7);
+    std::normal_distribution<float> noise(0.0f, 0.015f);
+    for (double s = 0.06; s <= 0.8; s += 0.02)
+        for (double y = -0.4; y <= 0.4; y += 0.02)
+            cloud.emplace_back(static_cast<float>(3.0 - s), static_cast<float>(y),
+                               -0.5f + noise(rng));
+    const std::optional<double> start = startSurfaceHeight(cloud, edges, 0.11, 0.3);
+    ASSERT_TRUE(start.has_value());
+    EXPECT_NEAR(*start, -0.5, 0.01);
+    std::vector<LineSegment> moved = edges;
+    const std::vector<double> upper(edges.size(), 10.0);
+    EXPECT_FALSE(fitEdgesOnStartSurface(*start, upper, 0.11, moved));
 }
 
 TEST(StartSurface, UnseenInFrontTheRobotsFloorIsTheStartOfAFirstEdgeTooLowForANosing) {
