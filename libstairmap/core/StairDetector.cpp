@@ -165,25 +165,21 @@ void recordDirection(const std::vector<LineSegment>& lines, const std::vector<ch
     explainRefusedPairs(lines, used, dir, floor_z, p, debug.rejected);
 }
 
-/// A box around `edges` holding the boxes that raiseEdgesToTreads, startSurfaceHeight and
-/// edgeClearances (default parameters, `rise` and `run` the flight's) select their points with:
-/// each selects from the points of `cloud` in it exactly what it would select from the whole
-/// cloud. Edges keep their XY, and raiseEdgesToTreads lifts each by less than a rise, so the box
-/// is known before the first step runs.
+/// A box around `edges` holding the boxes that raiseEdgesToTreads and edgeClearances (default
+/// parameters) select their points with: either selects from the points of `cloud` in it exactly
+/// what it would select from the whole cloud. Edges keep their XY, and raiseEdgesToTreads lifts
+/// each by less than a rise, so the second box is known before the first step runs.
 FlightBox bothCorrectionsBox(const std::vector<LineSegment>& edges, double rise, double run) {
     const TreadHeightParams tp;
     const RayClearanceParams rp;
-    const StartSurfaceParams sp;
-    constexpr double kSlack = 0.01;  // [m] beyond all boxes: no rounding decides a point
+    constexpr double kSlack = 0.01;  // [m] beyond both boxes: no rounding decides a point
     double z_lo = edges.front().z, z_hi = z_lo;
     for (const LineSegment& e : edges) {
         z_lo = std::min(z_lo, e.z);
         z_hi = std::max(z_hi, e.z);
     }
-    const double margin =
-        std::max({run, rp.max_behind_runs * run + rp.min_behind_m, sp.to_runs * run}) + kSlack;
-    const double below =
-        std::max({tp.below_m, rp.under_slack_m, rise + sp.below_rise_margin_m}) + kSlack;
+    const double margin = std::max(run, rp.max_behind_runs * run + rp.min_behind_m) + kSlack;
+    const double below = std::max(tp.below_m, rp.under_slack_m) + kSlack;
     const double above = std::max(tp.max_raise_fraction, rp.max_behind_runs + 3.0) * rise + kSlack;
     return flightBox(edges, margin, z_lo - below, z_hi + above);
 }
@@ -209,20 +205,26 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir, double fl
     if (dir == StairDirection::Ascending && edges.size() >= 2) {
         const Staircase probe = makeStaircase(edges, dir, 0.0);
         const double rise = probe.step_height, run = probe.step_depth;
-        const auto correctFrom = [&](const PointCloud& points) {
-            raiseEdgesToTreads(points, rise, run, edges);
-            const std::vector<double> upper = edgeClearances(points, edges, rise, run);
-            const std::optional<double> start = lowEdgesStart(points, edges, rise, run, floor_z);
-            if (!start || !fitEdgesOnStartSurface(*start, upper, rise, edges))
-                fitEdgesToRayClearance(upper, rise, edges);
-        };
-        // The steps look only at the points near the flight, each in its own box: the points in
-        // a box holding all of them, or the whole cloud when that would crop little (same result).
+        // Each step looks only at the points near the flight (or, for the start, in front of
+        // it), in its own box: the points in a box holding both corrections' boxes, or the whole
+        // cloud when that would crop little (same result); the start's window in one pass with
+        // it. The start's box reaches a rise under the first edge, the floor's points around the
+        // flight would make the corrections' box several times fuller.
         const FlightBox box = bothCorrectionsBox(edges, rise, run);
-        if (mostlyInside(cloud, box))
-            correctFrom(cloud);
-        else
-            correctFrom(pointsInBox(cloud, box));
+        FlightBox front = startWindowBox(edges, rise, run);
+        front.z_hi += TreadHeightParams().max_raise_fraction * rise;  // the first edge may rise
+        const bool crop = !mostlyInside(cloud, box);
+        PointCloud near_flight, in_front;
+        for (const Eigen::Vector3f& q : cloud) {
+            if (crop && box.contains(q)) near_flight.push_back(q);
+            if (front.contains(q)) in_front.push_back(q);
+        }
+        const PointCloud& points = crop ? near_flight : cloud;
+        raiseEdgesToTreads(points, rise, run, edges);
+        const std::vector<double> upper = edgeClearances(points, edges, rise, run);
+        const std::optional<double> start = lowEdgesStart(in_front, edges, rise, run, floor_z);
+        if (!start || !fitEdgesOnStartSurface(*start, upper, rise, edges))
+            fitEdgesToRayClearance(upper, rise, edges);
     }
     raiseLowEdges(edges, kRiserHitMinDrop);
 }

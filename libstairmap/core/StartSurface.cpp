@@ -11,22 +11,28 @@ namespace {
 /// [-] lateral bins across the flight for a band's spread (min_spread_fraction of them)
 constexpr int kSpreadBins = 20;
 
-}  // namespace
+/// The window in front of the first edge: a frame at its centre (u along it, up towards the
+/// flight) and the ranges across (t), along (s, negative in front) and in height.
+struct FrontWindow {
+    Eigen::Vector2d c, u, up;
+    double t_lo = 0, t_hi = 0, s_lo = 0, s_hi = 0, z_lo = 0, z_hi = 0;
+    bool valid = false;
+};
 
-std::optional<double> startSurfaceHeight(const PointCloud& cloud,
-                                         const std::vector<LineSegment>& edges, double rise,
-                                         double run, const StartSurfaceParams& p) {
-    if (edges.size() < 2 || !(run > 0) || !(rise > p.min_deficit_m + p.min_below_edge_m))
-        return std::nullopt;
+FrontWindow frontWindow(const std::vector<LineSegment>& edges, double rise, double run,
+                        const StartSurfaceParams& p) {
+    FrontWindow w;
+    if (edges.size() < 2 || !(run > 0) || !(rise > p.min_deficit_m + p.min_below_edge_m)) return w;
     const LineSegment& first = edges.front();
-    const Eigen::Vector2d c = first.centre(), u = first.direction();
-    const Eigen::Vector2d in_front = 2.0 * c - edges.back().centre();  // one flight's length
-    const Eigen::Vector2d up = first.normalAwayFrom(in_front);
+    w.c = first.centre();
+    w.u = first.direction();
+    const Eigen::Vector2d in_front = 2.0 * w.c - edges.back().centre();  // one flight's length
+    w.up = first.normalAwayFrom(in_front);
     // Across the flight: where most edges reach (the median of their ends along the first edge;
     // a far flight's first edge, a riser hit, is often a short piece), less the ends.
     std::vector<double> lo, hi;
     for (const LineSegment& e : edges) {
-        const double a = u.dot(e.start - c), b = u.dot(e.end - c);
+        const double a = w.u.dot(e.start - w.c), b = w.u.dot(e.end - w.c);
         lo.push_back(std::min(a, b));
         hi.push_back(std::max(a, b));
     }
@@ -34,24 +40,57 @@ std::optional<double> startSurfaceHeight(const PointCloud& cloud,
     std::nth_element(hi.begin(), hi.begin() + hi.size() / 2, hi.end());
     const double t_lo0 = lo[lo.size() / 2], t_hi0 = hi[hi.size() / 2];
     const double trim = p.end_fraction * (t_hi0 - t_lo0);
-    const double t_lo = t_lo0 + trim, t_hi = t_hi0 - trim;
-    const double s_lo = -std::max(p.to_runs * run, p.min_reach_m), s_hi = -p.from_runs * run;
-    const double z_lo = first.z - rise - p.below_rise_margin_m;
-    const double z_hi = first.z - p.min_below_edge_m;
-    const double width = t_hi - t_lo;
-    if (!(width > 0)) return std::nullopt;
+    w.t_lo = t_lo0 + trim;
+    w.t_hi = t_hi0 - trim;
+    w.s_lo = -std::max(p.to_runs * run, p.min_reach_m);
+    w.s_hi = -p.from_runs * run;
+    w.z_lo = first.z - rise - p.below_rise_margin_m;
+    w.z_hi = first.z - p.min_below_edge_m;
+    w.valid = w.t_hi > w.t_lo;
+    return w;
+}
+
+}  // namespace
+
+FlightBox startWindowBox(const std::vector<LineSegment>& edges, double rise, double run,
+                         const StartSurfaceParams& p) {
+    const FrontWindow w = frontWindow(edges, rise, run, p);
+    FlightBox box;
+    box.lo = box.hi = w.c;
+    box.z_lo = w.z_lo;
+    box.z_hi = w.z_hi;
+    if (!w.valid) {  // an empty box: z_lo above z_hi
+        box.z_lo = 1.0;
+        box.z_hi = 0.0;
+        return box;
+    }
+    for (const double t : {w.t_lo, w.t_hi})
+        for (const double s : {w.s_lo, w.s_hi}) {
+            const Eigen::Vector2d corner = w.c + t * w.u + s * w.up;
+            box.lo = box.lo.cwiseMin(corner);
+            box.hi = box.hi.cwiseMax(corner);
+        }
+    return box;
+}
+
+std::optional<double> startSurfaceHeight(const PointCloud& cloud,
+                                         const std::vector<LineSegment>& edges, double rise,
+                                         double run, const StartSurfaceParams& p) {
+    const FrontWindow w = frontWindow(edges, rise, run, p);
+    if (!w.valid) return std::nullopt;
+    const double width = w.t_hi - w.t_lo;
     struct Sample {
         double z;
         int bin;  ///< across the flight, 0..kSpreadBins-1
     };
     std::vector<Sample> window;
     for (const Eigen::Vector3f& q : cloud) {
-        if (!(q.z() >= z_lo && q.z() <= z_hi)) continue;  // NaN too
-        const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
-        const double s = up.dot(d), t = u.dot(d);
-        if (!(s >= s_lo && s <= s_hi && t >= t_lo && t <= t_hi)) continue;  // NaN too
+        if (!(q.z() >= w.z_lo && q.z() <= w.z_hi)) continue;  // NaN too
+        const Eigen::Vector2d d(q.x() - w.c.x(), q.y() - w.c.y());
+        const double s = w.up.dot(d), t = w.u.dot(d);
+        if (!(s >= w.s_lo && s <= w.s_hi && t >= w.t_lo && t <= w.t_hi)) continue;  // NaN too
         const int bin =
-            std::min(kSpreadBins - 1, static_cast<int>((t - t_lo) / width * kSpreadBins));
+            std::min(kSpreadBins - 1, static_cast<int>((t - w.t_lo) / width * kSpreadBins));
         window.push_back({q.z(), bin});
     }
     std::sort(window.begin(), window.end(),

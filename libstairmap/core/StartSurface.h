@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/FlightPoints.h"
 #include "core/LineSegment.h"
 #include "core/PointCloud.h"
 
@@ -50,6 +51,11 @@ struct StartSurfaceParams {
     double min_rise_m = 0.10;  ///< [m] the anchored rise must be a stair's (condition 1)
     double max_rise_m = 0.30;  ///< [m]
 };
+
+/// An axis-aligned box holding startSurfaceHeight's window (empty when it has none): the points
+/// of a cloud in it give the same result as the whole cloud.
+FlightBox startWindowBox(const std::vector<LineSegment>& edges, double rise, double run,
+                         const StartSurfaceParams& params = {});
 
 /// Height [m] of the surface in front of the first edge of `edges` (one ascending flight,
 /// consecutive steps, real z; `rise`, `run` [m] the flight's as measured): of the points in the
