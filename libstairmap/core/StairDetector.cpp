@@ -435,6 +435,20 @@ void addSpiralFlights(const std::vector<LineSegment>& front_drops,
     }
 }
 
+/// [m] noise of a flight's rise measured over all its steps, after the sparse-mode corrections
+constexpr double kFlightRiseNoise = 0.02;
+
+/// Condition 1 on whole flights. The sparse-mode tolerance admits single pairs read low by riser
+/// hits; once corrected, a flight's rise is measured over all its steps, and one still below
+/// condition 1 (less kFlightRiseNoise) is no stair: a 14 deg ramp's ring hits read as a flight of
+/// 0.078 m rises (dev3 r0265, a negative). Real flights of 0.10-0.11 m rises read 0.096-0.107 m.
+void dropFlightsBelowARise(const DetectorParams& p, std::vector<Staircase>& flights) {
+    const double min_rise = p.min_step_height_m - kFlightRiseNoise;
+    flights.erase(std::remove_if(flights.begin(), flights.end(),
+                                 [&](const Staircase& s) { return s.step_height < min_rise; }),
+                  flights.end());
+}
+
 }  // namespace
 
 StairDetector::StairDetector(const DetectorParams& params) : params_(params) { params_.validate(); }
@@ -492,6 +506,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     // pieces (a far VLP-16's, dev2 r0070; a depth camera's scattered ones, dev2 r0031) lie at the
     // same levels, their found edges side by side, but their measured treads overlap.
     mergeOverlappingFlights(result.staircases);
+    dropFlightsBelowARise(params_, result.staircases);
     if (debug) debug->accepted = result.staircases;
     return result;
 }

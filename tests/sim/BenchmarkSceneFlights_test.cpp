@@ -87,5 +87,16 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{3003, 241, 0.01, 0.02, true, "platform one rise up", 0},
                     SceneCase{3003, 70, 0.015, 0.02, false, "floor seen beside only", 1}));
 
+// A negative of a third development set (seed 4004): a 14 deg ramp up, 3.5 m wide, 2.6 m from a
+// level LiDAR. Its ring hits chain into a "flight" of 0.078 m rises; condition 1 on the whole
+// flight (less 2 cm of measurement noise) rejects it.
+TEST(NegativeScene, ARampSeenByALevelLidarIsNoFlight) {
+    const sim::RandomCloud scene = test::benchmarkScene(4004, 265);
+    ASSERT_TRUE(scene.truth.staircases.empty());
+    const DetectionResult result =
+        StairDetector().detect(scene.cloud, scene.truth.observer_floor_z);
+    EXPECT_TRUE(result.staircases.empty()) << result.staircases.size() << " staircases";
+}
+
 }  // namespace
 }  // namespace stairmap
