@@ -1,8 +1,8 @@
 #include "core/StartSurface.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace stairmap {
@@ -10,6 +10,14 @@ namespace {
 
 /// [-] lateral bins across the flight for a band's spread (min_spread_fraction of them)
 constexpr int kSpreadBins = 20;
+/// [m] height resolution of the band search (band_m is a whole number of these)
+constexpr double kHeightBin = 0.005;
+
+struct HeightBin {
+    int points = 0;
+    double z_sum = 0.0;        ///< [m] summed heights of the points
+    std::uint32_t across = 0;  ///< bit k: a point in lateral bin k
+};
 
 /// The window in front of the first edge: a frame at its centre (u along it, up towards the
 /// flight) and the ranges across (t), along (s, negative in front) and in height.
@@ -79,44 +87,41 @@ std::optional<double> startSurfaceHeight(const PointCloud& cloud,
     const FrontWindow w = frontWindow(edges, rise, run, p);
     if (!w.valid) return std::nullopt;
     const double width = w.t_hi - w.t_lo;
-    struct Sample {
-        double z;
-        int bin;  ///< across the flight, 0..kSpreadBins-1
-    };
-    std::vector<Sample> window;
+    // Heights in bins of kHeightBin: per bin the points, their summed height and the lateral
+    // bins they fall in (one bit each), so the band slides over bins, not sorted points.
+    const int z_bins = static_cast<int>((w.z_hi - w.z_lo) / kHeightBin) + 1;
+    std::vector<HeightBin> bins(static_cast<std::size_t>(std::max(z_bins, 1)));
     for (const Eigen::Vector3f& q : cloud) {
         if (!(q.z() >= w.z_lo && q.z() <= w.z_hi)) continue;  // NaN too
         const Eigen::Vector2d d(q.x() - w.c.x(), q.y() - w.c.y());
         const double s = w.up.dot(d), t = w.u.dot(d);
         if (!(s >= w.s_lo && s <= w.s_hi && t >= w.t_lo && t <= w.t_hi)) continue;  // NaN too
-        const int bin =
+        const int across =
             std::min(kSpreadBins - 1, static_cast<int>((t - w.t_lo) / width * kSpreadBins));
-        window.push_back({q.z(), bin});
+        HeightBin& h = bins[std::min(z_bins - 1, static_cast<int>((q.z() - w.z_lo) / kHeightBin))];
+        ++h.points;
+        h.z_sum += q.z();
+        h.across |= 1u << across;
     }
-    std::sort(window.begin(), window.end(),
-              [](const Sample& a, const Sample& b) { return a.z < b.z; });
-    // The band [z_i, z_i + band_m] holding the most points (spread across the flight), found by
-    // sliding it up the sorted heights with a count of its points per lateral bin.
-    const int n = static_cast<int>(window.size());
-    const int min_bins = static_cast<int>(std::ceil(p.min_spread_fraction * kSpreadBins));
-    std::array<int, kSpreadBins> count{};
+    // The band of band_m holding the most points (the lowest of equals), spread across the flight.
+    const int band = std::max(1, static_cast<int>(std::lround(p.band_m / kHeightBin)));
+    const int min_span = static_cast<int>(std::ceil(p.min_spread_fraction * kSpreadBins));
     std::optional<double> best;
     int best_points = p.min_points - 1;
-    for (int i = 0, j = 0; i < n; ++i) {
-        while (j < n && window[j].z <= window[i].z + p.band_m) ++count[window[j++].bin];
-        if (j - i > best_points) {
-            int first_bin = kSpreadBins, last_bin = -1;
-            for (int k = 0; k < kSpreadBins; ++k) {
-                if (count[k] == 0) continue;
-                first_bin = std::min(first_bin, k);
-                last_bin = k;
-            }
-            if (last_bin - first_bin + 1 >= min_bins) {
-                best_points = j - i;
-                best = window[(i + j) / 2].z;  // the band's median height
-            }
+    for (int i = 0; i + band <= z_bins || (i == 0 && z_bins < band); ++i) {
+        int points = 0;
+        double z_sum = 0.0;
+        std::uint32_t across = 0;
+        for (int k = i; k < std::min(i + band, z_bins); ++k) {
+            points += bins[k].points;
+            z_sum += bins[k].z_sum;
+            across |= bins[k].across;
         }
-        --count[window[i].bin];
+        if (points <= best_points || across == 0) continue;
+        const int span = 32 - __builtin_clz(across) - __builtin_ctz(across);
+        if (span < min_span) continue;
+        best_points = points;
+        best = z_sum / points;  // the band's mean height
     }
     return best;
 }

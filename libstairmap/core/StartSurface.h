@@ -61,8 +61,8 @@ FlightBox startWindowBox(const std::vector<LineSegment>& edges, double rise, dou
 /// consecutive steps, real z; `rise`, `run` [m] the flight's as measured): of the points in the
 /// window (from_runs..to_runs runs or min_reach_m in front of the first edge, across the flight's
 /// width less the ends, from min_below_edge_m to a rise and below_rise_margin_m under the first
-/// edge), the flat band (band_m) holding the most, at least min_points spread across
-/// min_spread_fraction of the width; its median height. The most: the surface a flight starts from
+/// edge), the flat band (band_m, in 5 mm bins) holding the most, at least min_points spread across
+/// min_spread_fraction of the width; its mean height. The most: the surface a flight starts from
 /// fills the area in front of it; a real elevation map smears a riser's foot into a band of
 /// intermediate heights there (the ANYmal entrance: 6 cm above the landing), and a noisy floor's
 /// tail forms a band of its own. The flight's width: the median of the edges' ends along the
