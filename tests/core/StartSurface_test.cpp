@@ -11,58 +11,23 @@
 
 #include "core/RayClearance.h"
 #include "core/StairDetector.h"
+#include "support/RingScannedFlight.h"
 
 namespace stairmap {
 namespace {
 
-/// A closed-riser flight along +x on a floor, seen by a level 16-ring LiDAR (2 deg apart, a
-/// VLP-16) at the origin: nosing k at x0 + k run, floor_z + (k + 1) rise. At 4.6 m the rings
-/// lie 16 cm apart on a riser, close to the rise: every step is hit at about the same phase.
-struct Flight {
-    double x0 = 4.6, run = 0.30, rise = 0.18, floor_z = -0.5;
-    int steps = 6;
-    double nosingZ(int k) const { return floor_z + (k + 1) * rise; }
-    double nosingX(int k) const { return x0 + k * run; }
-    double surface(double x) const {
-        if (x < x0) return floor_z;
-        const int k = std::min(steps - 1, static_cast<int>(std::floor((x - x0) / run)));
-        return nosingZ(k);
+using test::riserTopEdge;
+using test::scanFlight;
+
+/// At 4.6 m the rings lie 16 cm apart on a riser, close to the rise: every step is hit at about
+/// the same phase.
+struct Flight : test::RingScannedFlight {
+    Flight() {
+        x0 = 4.6;
+        run = 0.30;
+        rise = 0.18;
     }
 };
-
-/// First hit of every ray (rings -15..15 deg, azimuths +-6 deg) on the flight's profile.
-PointCloud scanFlight(const Flight& f) {
-    PointCloud cloud;
-    for (int ring = 0; ring < 16; ++ring) {
-        const double slope = std::tan((-15.0 + 2.0 * ring) * M_PI / 180.0);
-        for (double az = -6.0; az <= 6.0; az += 0.2) {
-            const double c = std::cos(az * M_PI / 180.0), s = std::sin(az * M_PI / 180.0);
-            for (double r = 0.5; r < 12.0; r += 0.001) {
-                const double x = r * c, z = slope * r;
-                if (z <= f.surface(x)) {
-                    cloud.emplace_back(x, r * s, z);
-                    break;
-                }
-            }
-        }
-    }
-    return cloud;
-}
-
-/// Edge k as the top view finds it: at the riser, at the height of its highest hit.
-LineSegment riserTopEdge(const PointCloud& cloud, const Flight& f, int k) {
-    double top = -std::numeric_limits<double>::infinity();
-    for (const auto& q : cloud)
-        if (std::abs(q.x() - f.nosingX(k)) < 0.01 && std::abs(q.y()) < 0.45 && q.z() < f.nosingZ(k))
-            top = std::max(top, static_cast<double>(q.z()));
-    LineSegment l;
-    l.start = {f.nosingX(k), -0.45};
-    l.end = {f.nosingX(k), 0.45};
-    l.z = top;
-    l.rho = f.nosingX(k);
-    l.num_points = 20;
-    return l;
-}
 
 std::vector<LineSegment> riserTopEdges(const PointCloud& cloud, const Flight& f) {
     std::vector<LineSegment> edges;
