@@ -22,7 +22,8 @@ struct HeightBin {
 /// The window in front of the first edge: a frame at its centre (u along it, up towards the
 /// flight) and the ranges across (t), along (s, negative in front) and in height.
 struct FrontWindow {
-    Eigen::Vector2d c, u, up;
+    Eigen::Vector2d c = Eigen::Vector2d::Zero(), u = Eigen::Vector2d::Zero(),
+                    up = Eigen::Vector2d::Zero();
     double t_lo = 0, t_hi = 0, s_lo = 0, s_hi = 0, z_lo = 0, z_hi = 0;
     bool valid = false;
 };
@@ -67,9 +68,9 @@ FlightBox startWindowBox(const std::vector<LineSegment>& edges, double rise, dou
     box.lo = box.hi = w.c;
     box.z_lo = w.z_lo;
     box.z_hi = w.z_hi;
-    if (!w.valid) {  // an empty box: z_lo above z_hi
-        box.z_lo = 1.0;
-        box.z_hi = 0.0;
+    if (!w.valid) {  // an empty box, whatever is added to its bounds
+        box.z_lo = std::numeric_limits<double>::infinity();
+        box.z_hi = -std::numeric_limits<double>::infinity();
         return box;
     }
     for (const double t : {w.t_lo, w.t_hi})

@@ -52,8 +52,9 @@ struct StartSurfaceParams {
     double max_rise_m = 0.30;  ///< [m]
 };
 
-/// An axis-aligned box holding startSurfaceHeight's window (empty when it has none): the points
-/// of a cloud in it give the same result as the whole cloud.
+/// An axis-aligned box holding startSurfaceHeight's window for these edges, rise and run (empty
+/// when there is none): the points of a cloud in it give the same result as the whole cloud. Its
+/// top follows the first edge: a caller that raises the edges afterwards widens it upwards.
 FlightBox startWindowBox(const std::vector<LineSegment>& edges, double rise, double run,
                          const StartSurfaceParams& params = {});
 

@@ -144,6 +144,26 @@ TEST(StartSurface, TheFlatBandFillingTheFrontIsTheStart) {
     EXPECT_FALSE(startSurfaceHeight(beside, edges, 0.4, 0.3).has_value());
 }
 
+TEST(StartSurface, TheWindowsBoxHoldsEveryPointItLooksAt) {
+    const Flight f;
+    const PointCloud cloud = scanFlight(f);
+    const std::vector<LineSegment> edges = riserTopEdges(cloud, f);
+    const double rise = measuredRise(edges);
+    const FlightBox box = startWindowBox(edges, rise, f.run);
+    PointCloud inside;
+    for (const auto& q : cloud)
+        if (box.contains(q)) inside.push_back(q);
+    ASSERT_LT(inside.size(), cloud.size() / 2);  // the box crops
+    const auto whole = startSurfaceHeight(cloud, edges, rise, f.run);
+    ASSERT_TRUE(whole.has_value());
+    EXPECT_EQ(startSurfaceHeight(inside, edges, rise, f.run), whole);
+    // No window (one edge): an empty box, also once its top is raised.
+    FlightBox none = startWindowBox({edges.front()}, rise, f.run);
+    none.z_hi += 2.0;
+    for (const auto& q : cloud) EXPECT_FALSE(none.contains(q));
+    EXPECT_FALSE(none.contains(Eigen::Vector3f(0.0f, 0.0f, 1.5f)));
+}
+
 TEST(StartSurface, ANoisyFloorIsSeenWholeNotByTheTailOfItsNoise) {
     // A depth camera's floor at -0.5 (1.5 cm noise) in front of a flight of 0.11 m rises whose
     // first edge reads 1 cm low: the floor, not its upper tail, is the start, and nothing moves.
