@@ -5,8 +5,7 @@
 // mid radius x sin(step) there, short of the chord 2 x mid radius x sin(step / 2) by 2-6 % at
 // 25-40 deg, and an edge seen only near the column puts its centre inside the mid radius. Here:
 // the axis is the point nearest to all edge lines (least squares), the step angle the slope of
-// the edges' angles around it against their level (their index, one more for each nosing stepped
-// over: a turn of two or three steps), the inner and outer radii the medians of the
+// the edges' angles around it against their index, the inner and outer radii the medians of the
 // seen edges' inner and outer ends (as measured over the treads by StepExtent). On the two dev
 // sets (96 spirals) the spiral run MAE went 1.66 / 2.04 -> 1.47 / 1.33 cm; the upper quartile of
 // the outer ends gave 1.54 / 1.45, the largest 1.84 / 1.66 (a tread walk can run onto a wall).
@@ -21,10 +20,6 @@ namespace stairmap {
 struct TurningFlightParams {
     double min_step_angle_deg = 10.0;  ///< [deg] below this per step the flight is straight
     double max_axis_offset_m = 0.15;   ///< [m] an edge's line passes this close to the axis
-    /// [-] a turn between consecutive edges is a whole number of steps (a nosing stepped over)
-    /// within this fraction of a step. The edges' angles scatter by 3-8 deg on far views; 0.15
-    /// or 0.25 did no better on the development sets.
-    double turn_tolerance = 0.2;
 };
 
 struct TurningFlight {

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
 #include <cmath>
 
 namespace stairmap {
@@ -51,42 +50,6 @@ TEST(TurningFlight, RunAtMidRadiusOfASpiralSeenPartly) {
         EXPECT_NEAR(t->outer_radius_m, sp.outer, 0.01);
         EXPECT_NEAR(t->run_m, sp.run(), 0.005) << step;
     }
-}
-
-TEST(TurningFlight, NosingsSteppedOverCountTheirSteps) {
-    // A far ring misses whole nosings: the chain holds levels 0, 1, 3, 5, 6, 7 (turns of one and
-    // two steps). Against the index the step would read 7/5 of the truth.
-    for (double step : {30.0 * kDeg, -22.0 * kDeg}) {
-        Spiral sp;
-        sp.step = step;
-        Staircase s;
-        for (int k : {0, 1, 3, 5, 6, 7}) s.steps.push_back(nosing(sp, k, sp.inner, sp.outer));
-        const auto t = turningFlight(s);
-        ASSERT_TRUE(t.has_value()) << step;
-        EXPECT_NEAR(t->step_angle_rad, std::abs(step), 0.2 * kDeg) << step;
-        EXPECT_NEAR(t->run_m, sp.run(), 0.005) << step;
-    }
-}
-
-TEST(TurningFlight, ScatteredConsecutiveNosingsStayOneStepApart) {
-    // Edge angles scattered by up to 3 deg around consecutive nosings of 28 deg (turns 22-33
-    // deg): no turn is a whole number of steps of another, the step is the slope against the
-    // index. (Scattered by a third of a step, a turn can read twice another: dev r0189.)
-    Spiral sp;
-    sp.step = 28.0 * kDeg;
-    Staircase s;
-    const double scatter[] = {0.0, 3.0, -3.0, 2.0, -2.0, 3.0, -3.0};
-    for (int k = 0; k < 7; ++k) {
-        StairEdge e = nosing(sp, k, sp.inner, sp.outer);
-        const Eigen::Vector3d c(sp.axis.x(), sp.axis.y(), e.start.z());
-        const Eigen::AngleAxisd turn(scatter[k] * kDeg, Eigen::Vector3d::UnitZ());
-        e.start = c + turn * (e.start - c);
-        e.end = c + turn * (e.end - c);
-        s.steps.push_back(e);
-    }
-    const auto t = turningFlight(s);
-    ASSERT_TRUE(t.has_value());
-    EXPECT_NEAR(t->step_angle_rad, sp.step, 1.5 * kDeg);
 }
 
 TEST(TurningFlight, StraightFlightsAndNoisyEdgesHaveNone) {
