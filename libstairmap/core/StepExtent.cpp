@@ -19,6 +19,7 @@ constexpr std::uint8_t kTread = 1, kAbove = 2, kBelow = 4, kOnNosing = 8, kAbove
 /// outward. Lateral bins from t0 record tread points and points above / below the tread.
 struct TreadScan {
     Eigen::Vector2d c, u, n;
+    Eigen::Vector2d edge_u;  ///< the found edge's own direction (u is the flight's when straight)
     double z = 0.0, s_lo = 0.0, s_hi = 0.0, t0 = 0.0;
     double nosing_band = 0.0;  ///< [m] |s| up to this is on the nosing line
     /// [m] beyond this s, points up to next_front_dz above the tread are the next step's front
@@ -60,6 +61,7 @@ TreadScan scanOf(const Staircase& s, std::size_t k, const StepExtentParams& p) {
     t.step = k;
     t.c = e.centre().head<2>();
     t.u = (e.end - e.start).head<2>().normalized();
+    t.edge_u = t.u;
     t.n = outwardNormal(s, k);
     t.z = e.centre().z();
     const double run = std::max(s.step_depth, 0.1);
@@ -229,7 +231,7 @@ Extent measure(const TreadScan& t, const StepExtentParams& p) {
 
 /// Sets the edge to the measured extent (never shorter).
 void applyExtent(const TreadScan& t, const Extent& x, const StepExtentParams& p, StairEdge& e) {
-    const Eigen::Vector3d c = e.centre(), u(t.u.x(), t.u.y(), 0.0);
+    const Eigen::Vector3d c = e.centre(), u(t.edge_u.x(), t.edge_u.y(), 0.0);
     if (x.lo < t.edge_lo) e.start = c + (t.t0 + x.lo * p.bin_m) * u;
     if (x.hi > t.edge_hi) e.end = c + (t.t0 + (x.hi + 1) * p.bin_m) * u;
 }
@@ -319,6 +321,27 @@ double flightWidth(std::vector<double> widths, const Staircase& stairs) {
     return widths[(widths.size() * 3) / 4];
 }
 
+/// On a straight flight (every edge within max_dev of the flight's common direction) each tread
+/// is scanned along that common direction: one edge's fit off by a few degrees would otherwise
+/// tilt its window across the run, so that near its ends the next step's nosing falls into it
+/// and reads as a wall (dev2 r0079: edges 3 deg off, 1.49 m read for 2.2 m).
+void alignStraightFlight(std::vector<TreadScan>& scans, double max_dev_rad) {
+    if (scans.size() < 2 || !(max_dev_rad > 0.0)) return;
+    Eigen::Vector2d m = Eigen::Vector2d::Zero();
+    for (const TreadScan& t : scans) m += (t.u.dot(scans.front().u) >= 0 ? 1.0 : -1.0) * t.u;
+    if (m.norm() < 1e-6) return;
+    m.normalize();
+    const double min_cos = std::cos(max_dev_rad);
+    for (const TreadScan& t : scans)
+        if (std::abs(t.u.dot(m)) < min_cos) return;  // turning: a spiral, a winder
+    for (TreadScan& t : scans) {
+        const Eigen::Vector2d u = t.u.dot(m) >= 0 ? m : Eigen::Vector2d(-m);
+        const Eigen::Vector2d n(-u.y(), u.x());
+        t.n = n.dot(t.n) >= 0 ? n : Eigen::Vector2d(-n);
+        t.u = u;
+    }
+}
+
 }  // namespace
 
 void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepExtentParams& p) {
@@ -328,11 +351,12 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
     const bool up = stairs.direction == StairDirection::Ascending;
     const std::size_t first = up ? 0 : 1, last = up ? n - 1 : n;
     std::vector<TreadScan> scans;
+    for (std::size_t k = first; k < last; ++k)
+        if (stairs.steps[k].length() > 1e-6)  // else no direction to measure along
+            scans.push_back(scanOf(stairs, k, p));
+    alignStraightFlight(scans, p.common_direction_max_deg * M_PI / 180.0);
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e18), hi = -lo;
-    for (std::size_t k = first; k < last; ++k) {
-        if (!(stairs.steps[k].length() > 1e-6)) continue;  // no direction to measure along
-        scans.push_back(scanOf(stairs, k, p));
-        const TreadScan& t = scans.back();
+    for (const TreadScan& t : scans) {
         const double reach = -t.t0;
         for (double a : {-reach, reach})
             for (double b : {std::min(t.s_lo, -t.nosing_band), std::max(t.s_hi, t.nosing_band)}) {

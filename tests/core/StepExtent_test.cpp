@@ -111,9 +111,9 @@ void addNosingHits(PointCloud& c, double y_lo, double y_hi) {
                            static_cast<float>(treadZ(k)));
 }
 
-TEST(StepExtent, AStepHitOnlyAlongItsNosingIsMeasuredToTheNosingsEnds) {
-    // A far LiDAR ring hits each step along its nosing; the treads' surfaces are seen only in the
-    // middle (y -0.1 .. 0.3, where the found pieces lie). Wall on the left, floor on the right.
+/// A far LiDAR ring hits each step along its nosing; the treads' surfaces are seen only in the
+/// middle (y -0.1 .. 0.3, where the found pieces lie). Wall on the left, floor on the right.
+PointCloud nosingHitsCloud() {
     PointCloud cloud;
     addNosingHits(cloud, -kHalfWidth, kHalfWidth);
     for (int k = 0; k + 1 < kSteps; ++k)
@@ -125,11 +125,40 @@ TEST(StepExtent, AStepHitOnlyAlongItsNosingIsMeasuredToTheNosingsEnds) {
             for (double y = -kHalfWidth - 0.3; y < -kHalfWidth - 0.05; y += 0.04)
                 cloud.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(kFloor));
         }
+    return cloud;
+}
+
+TEST(StepExtent, AStepHitOnlyAlongItsNosingIsMeasuredToTheNosingsEnds) {
     Staircase s = pieces();
-    measureStepExtents(cloud, s);
+    measureStepExtents(nosingHitsCloud(), s);
     EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
     EXPECT_EQ(s.left_side, StairSide::Wall);
     EXPECT_EQ(s.right_side, StairSide::Open);
+}
+
+TEST(StepExtent, AStraightFlightsStepsAreMeasuredAlongItsCommonDirection) {
+    // The pieces' fits are off by +-4 deg in turn (a short piece's angle error): along its own
+    // direction each tread's band leaves the nosing line 4 cm off at 0.6 m from the piece, and
+    // the step would end there. The flight's mean direction is the true one.
+    Staircase s = pieces();
+    const double tilt = 4.0 * M_PI / 180.0;
+    for (std::size_t k = 0; k < s.steps.size(); ++k) {
+        StairEdge& e = s.steps[k];
+        const Eigen::Vector3d c = e.centre();
+        const double a = (k % 2 == 0 ? 1.0 : -1.0) * tilt, half = 0.5 * e.length();
+        const Eigen::Vector3d left(std::sin(a), std::cos(a), 0.0);  // +y turned by a
+        e.start = c + half * left;
+        e.end = c - half * left;
+    }
+    estimateGeometry(s);
+    measureStepExtents(nosingHitsCloud(), s);
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+    for (int k = 0; k + 1 < kSteps; ++k)  // the edges keep their own directions
+        EXPECT_NEAR(std::abs((s.steps[k].end - s.steps[k].start).normalized().x()), std::sin(tilt),
+                    1e-6)
+            << "step " << k;
 }
 
 TEST(StepExtent, AStringerBesideTheTreadsIsNoPartOfTheSteps) {
