@@ -397,9 +397,25 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);
 }
 
+/// [m] a spiral's lowest nosing this much less than its rise above the floor reads low
+constexpr double kLowSpiralFootMargin = 0.03;
+
+/// Sparse-cloud mode: a spiral seen by a level LiDAR's riser hits only (dev3 r0222, a VLP-16 at
+/// 3.4 m) has every edge low by 2-11 cm, its lowest less than a rise above the floor; the straight
+/// flights' corrections (correctRiserTopEdges) put them onto the line from the floor. Only then:
+/// applied to every spiral they moved the rise of spirals seen well, starting above the floor
+/// (dev2 r0197: 0.4 -> 1.3 cm off).
+void correctLowSpiralFoot(const PointCloud& cloud, double floor_z,
+                          std::vector<LineSegment>& edges) {
+    if (edges.size() < 2) return;
+    const double rise = makeStaircase(edges, StairDirection::Ascending, 0.0).step_height;
+    if (edges.front().z - floor_z < rise - kLowSpiralFootMargin)
+        correctRiserTopEdges(cloud, StairDirection::Ascending, floor_z, edges);
+}
+
 /// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
 /// steps (in its column's radius and height range) unless one of them has more steps.
-void addSpiralFlights(const std::vector<LineSegment>& front_drops,
+void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& front_drops,
                       const std::vector<LineSegment>& back_drops, double floor_z,
                       const DetectorParams& p, std::vector<Staircase>& out) {
     SpiralSearchParams sp;
@@ -429,7 +445,9 @@ void addSpiralFlights(const std::vector<LineSegment>& front_drops,
         out.erase(std::remove_if(out.begin(), out.end(), onSpiral), out.end());
         // The run at mid radius from the found lines: StepExtent's tread windows use it, and it
         // is measured again from the measured edges (TurningFlight).
-        out.push_back(makeStaircase(f.edges, StairDirection::Ascending, 0.5 * p.leaf_size_m));
+        std::vector<LineSegment> edges = f.edges;
+        if (p.edge_height_tolerance_m > 0) correctLowSpiralFoot(cloud, floor_z, edges);
+        out.push_back(makeStaircase(edges, StairDirection::Ascending, 0.5 * p.leaf_size_m));
         out.back().step_depth = f.run_m;
         out.back().slope_rad = std::atan2(out.back().step_height, f.run_m);
     }
@@ -494,7 +512,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     joinContinuedFlights(result.staircases, jp);
     // After the merges, which compare the edges of straight flights.
     if (params_.detect_ascending)
-        addSpiralFlights(front_drops, back_drops, floor, params_, result.staircases);
+        addSpiralFlights(cloud_robot, front_drops, back_drops, floor, params_, result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides
         if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius
