@@ -335,7 +335,8 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     };
     if (up) {
         if (const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, continued)) {
-            for (int idx : *taken) used[idx] = 1;
+            if (!used.empty())  // kept only for the searches below and the debug record
+                for (int idx : *taken) used[idx] = 1;
             refused.clear();  // not a refusal after all
         }
     }

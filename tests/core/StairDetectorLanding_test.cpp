@@ -51,6 +51,19 @@ TEST(FlightFromARaisedLanding, ThreeRisesAboveALandingOneStepUpAreAFlight) {
     EXPECT_NEAR(flightStartZ(s) - kFloorZ, 0.10, 0.03);
 }
 
+TEST(FlightFromARaisedLanding, IsFoundWithTheOptionalSearchesSwitchedOff) {
+    // Deep treads and pairs two steps apart off (a valid config): the chain one edge short is
+    // still continued from its landing, without the lines-used record those searches keep.
+    DetectorParams p;
+    p.max_level_tread_depth_m = p.max_step_depth_m;
+    p.max_double_step_rise_m = 0.0;
+    const PointCloud cloud = heightField([](double x) { return x < 1.0 ? 0.0 : flight(x, 0.10); });
+    const DetectionResult r = StairDetector(p).detect(cloud, kFloorZ);
+    ASSERT_EQ(r.staircases.size(), 1u) << describe(r);
+    EXPECT_EQ(r.staircases.front().steps.size(), 3u);
+    EXPECT_NEAR(r.staircases.front().step_height, kRise, 0.01);
+}
+
 TEST(FlightFromARaisedLanding, TheSameRisesOffTheFloorAreAStage) {
     const PointCloud cloud = heightField([](double x) { return flight(x, 0.0); });
     const DetectionResult r = StairDetector().detect(cloud, kFloorZ);
