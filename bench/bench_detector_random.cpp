@@ -74,9 +74,9 @@ double quantile(std::vector<double> v, double q) {
     return v[static_cast<std::size_t>(k)];
 }
 
-void BM_DetectRandomSet(benchmark::State& state) {
+void detectSet(benchmark::State& state, const stairmap::DetectorParams& params) {
     const auto& set = samples();
-    const stairmap::StairDetector detector;
+    const stairmap::StairDetector detector(params);
     std::vector<double> ms(set.size());
     for (auto _ : state) {
         for (std::size_t i = 0; i < set.size(); ++i) {
@@ -103,7 +103,16 @@ void BM_DetectRandomSet(benchmark::State& state) {
     state.counters["ms_at_0_pts"] = n > 0 ? (sy - b * sx) / n : 0.0;
     state.counters["ms_per_10k_pts"] = 10.0 * b;
 }
+void BM_DetectRandomSet(benchmark::State& state) { detectSet(state, {}); }
 BENCHMARK(BM_DetectRandomSet)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+/// The same without the tilted-ring pass (DetectorParams::tilted_ring_row_height_m): its cost.
+void BM_DetectRandomSet_NoTiltedRingPass(benchmark::State& state) {
+    stairmap::DetectorParams params;
+    params.tilted_ring_row_height_m = 0.0;
+    detectSet(state, params);
+}
+BENCHMARK(BM_DetectRandomSet_NoTiltedRingPass)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

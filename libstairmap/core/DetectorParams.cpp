@@ -54,6 +54,11 @@ void DetectorParams::validate() const {
     requireRange(max_height_above_floor_m, 0.3, 50.0, "max_height_above_floor_m");
     requireRange(max_depth_below_floor_m, 0.0, 50.0, "max_depth_below_floor_m");
     requireRange(row_height_m, 0.005, 0.2, "row_height_m");
+    if (tilted_ring_row_height_m != 0.0) {
+        requireRange(tilted_ring_row_height_m, 0.005, 0.2, "tilted_ring_row_height_m");
+        requireLess(row_height_m, tilted_ring_row_height_m, "row_height_m",
+                    "tilted_ring_row_height_m");
+    }
     requireRange(azimuth_bins, 36, 100000, "azimuth_bins");
     requireRange(edge_min_dz_m, 0.0, 1.0, "edge_min_dz_m");
     requireRange(edge_spill_dz_m, 0.0, 1.0, "edge_spill_dz_m");

@@ -5,6 +5,7 @@
 
 #include "core/CylindricalRows.h"
 #include "core/FlightContinuation.h"
+#include "core/FlightFootprint.h"
 #include "core/FlightJoin.h"
 #include "core/FlightPoints.h"
 #include "core/FloorEstimation.h"
@@ -261,12 +262,19 @@ bool mayContinue(const std::vector<LineSegment>& edges, const DetectorParams& p)
            isRegularStraightChain(edges, continuationParams(p));
 }
 
+/// One direction's flights from the lines of `cells`, leaving out the lines on `found_before`.
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
                      StairDirection dir, double floor_z, const DetectorParams& p,
-                     std::vector<Staircase>& out, DetectorDebug* debug,
-                     std::vector<LineSegment>& raw_lines) {
+                     const std::vector<Staircase>& found_before, std::vector<Staircase>& out,
+                     DetectorDebug* debug, std::vector<LineSegment>& raw_lines) {
     const bool up = dir == StairDirection::Ascending;
     std::vector<LineSegment> lines = extractLines(cells, up ? kFrontDrop : kBackDrop, floor_z, p);
+    if (!found_before.empty())
+        lines.erase(std::remove_if(lines.begin(), lines.end(),
+                                   [&](const LineSegment& l) {
+                                       return onAnyFlightFootprint(l.centre(), found_before);
+                                   }),
+                    lines.end());
     raw_lines = lines;  // real z, for the spiral search
     if (!up) {
         // Descending = ascending in mirrored z.
@@ -454,6 +462,51 @@ void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& f
     }
 }
 
+FlightJoinParams joinParams(const DetectorParams& p) {
+    FlightJoinParams jp;
+    jp.max_heading_diff_deg = std::min(15.0, p.max_parallel_deg);
+    jp.height_tolerance_m = std::max(p.edge_height_tolerance_m, 0.02);
+    return jp;
+}
+
+/// Algorithm 1 both ways on the lines of `cells` (rows of p.row_height_m) off the flights in
+/// `found_before`, the detector's merges of its own chains, then the spirals. `user` are the
+/// parameters as given (p may have a raised split distance or other rows).
+std::vector<Staircase> findFlights(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
+                                   double floor_z, const DetectorParams& p,
+                                   const DetectorParams& user,
+                                   const std::vector<Staircase>& found_before,
+                                   DetectorDebug* debug) {
+    std::vector<Staircase> found;
+    std::vector<LineSegment> front_drops, back_drops;  // real z, for the spiral search
+    if (p.detect_ascending)
+        detectDirection(cloud, cells, StairDirection::Ascending, floor_z, p, found_before, found,
+                        debug, front_drops);
+    if (p.detect_descending)
+        detectDirection(cloud, cells, StairDirection::Descending, floor_z, p, found_before, found,
+                        debug, back_drops);
+    mergeOverlappingFlights(found);  // Algorithm 2 on the detector's own chains
+    joinContinuedFlights(found, joinParams(user));
+    // After the merges, which compare the edges of straight flights.
+    if (user.detect_ascending)
+        addSpiralFlights(cloud, front_drops, back_drops, floor_z, user, found);
+    return found;
+}
+
+/// The tilted-ring pass (DetectorParams::tilted_ring_row_height_m): the search again with taller
+/// rows on the lines off the flights found; its flights that keep off those too are added.
+void addTiltedRingFlights(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
+                          double floor_z, const DetectorParams& p, const DetectorParams& user,
+                          std::vector<Staircase>& found) {
+    DetectorParams tall = p;
+    tall.row_height_m = user.tilted_ring_row_height_m;
+    for (Staircase& s : findFlights(cloud, cells, floor_z, tall, user, found, nullptr))
+        if (!overlapsAnyFlight(s, found)) found.push_back(std::move(s));
+    // A flight the first pass found in part may go on beyond its footprint (dev2 r0008: its
+    // upper seven steps, seen by the tilted rings only).
+    joinContinuedFlights(found, joinParams(user));
+}
+
 /// [m] noise of a flight's rise measured over all its steps, after the sparse-mode corrections
 constexpr double kFlightRiseNoise = 0.02;
 
@@ -499,21 +552,9 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (debug) debug->candidates = cells;
 
     const DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
-    std::vector<LineSegment> front_drops, back_drops;  // real z, for the spiral search
-    if (p.detect_ascending)
-        detectDirection(cloud_robot, cells, StairDirection::Ascending, floor, p, result.staircases,
-                        debug, front_drops);
-    if (p.detect_descending)
-        detectDirection(cloud_robot, cells, StairDirection::Descending, floor, p, result.staircases,
-                        debug, back_drops);
-    mergeOverlappingFlights(result.staircases);  // Algorithm 2 on the detector's own chains
-    FlightJoinParams jp;
-    jp.max_heading_diff_deg = std::min(15.0, params_.max_parallel_deg);
-    jp.height_tolerance_m = std::max(params_.edge_height_tolerance_m, 0.02);
-    joinContinuedFlights(result.staircases, jp);
-    // After the merges, which compare the edges of straight flights.
-    if (params_.detect_ascending)
-        addSpiralFlights(cloud_robot, front_drops, back_drops, floor, params_, result.staircases);
+    result.staircases = findFlights(cloud_robot, cells, floor, p, params_, {}, debug);
+    if (params_.tilted_ring_row_height_m > 0)
+        addTiltedRingFlights(cloud_robot, cells, floor, p, params_, result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides
         if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius

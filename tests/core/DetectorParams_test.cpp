@@ -79,38 +79,40 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 INSTANTIATE_TEST_SUITE_P(
     Fields, RejectsBadValue,
-    testing::Values(BadValue{"leaf_size_m", [](DetectorParams& p) { p.leaf_size_m = 0.0; }},
-                    BadValue{"leaf_size_m", [](DetectorParams& p) { p.leaf_size_m = kNaN; }},
-                    BadValue{"azimuth_bins", [](DetectorParams& p) { p.azimuth_bins = 3; }},
-                    BadValue{"min_line_points", [](DetectorParams& p) { p.min_line_points = 1; }},
-                    BadValue{"max_step_height_m",
-                             [](DetectorParams& p) { p.max_step_height_m = 0.05; }},
-                    BadValue{"min_slope_deg", [](DetectorParams& p) { p.min_slope_deg = 70; }},
-                    BadValue{"point_sigma_m", [](DetectorParams& p) { p.point_sigma_m = -1; }},
-                    BadValue{"split_noise_factor",
-                             [](DetectorParams& p) { p.split_noise_factor = -1; }},
-                    BadValue{"max_split_distance_m",  // below the fixed d_p it would raise
-                             [](DetectorParams& p) { p.max_split_distance_m = 0.02; }},
-                    BadValue{"floor_tolerance_m",
-                             [](DetectorParams& p) { p.floor_tolerance_m = 0.2; }},
-                    BadValue{"max_level_tread_depth_m",  // below the usual run bound
-                             [](DetectorParams& p) { p.max_level_tread_depth_m = 0.3; }},
-                    BadValue{"max_double_step_rise_m",  // under two of the smallest rises
-                             [](DetectorParams& p) { p.max_double_step_rise_m = 0.15; }},
-                    BadValue{"max_double_step_rise_m",  // beyond condition 1's bound
-                             [](DetectorParams& p) { p.max_double_step_rise_m = 0.5; }},
-                    BadValue{"min_level_tread_slope_deg",  // above the usual slope bound
-                             [](DetectorParams& p) { p.min_level_tread_slope_deg = 30; }},
-                    BadValue{"min_deep_tread_m",  // deeper than the deep search reaches
-                             [](DetectorParams& p) { p.min_deep_tread_m = 0.7; }},
-                    BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }},
-                    // Top-view grid over the memory budget (the far-extent case of issue 8).
-                    BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},
-                    BadValue{"max_range_m",
-                             [](DetectorParams& p) {
-                                 p.max_range_m = 21;
-                                 p.leaf_size_m = 0.01;
-                             }}),
+    testing::Values(
+        BadValue{"leaf_size_m", [](DetectorParams& p) { p.leaf_size_m = 0.0; }},
+        BadValue{"leaf_size_m", [](DetectorParams& p) { p.leaf_size_m = kNaN; }},
+        BadValue{"azimuth_bins", [](DetectorParams& p) { p.azimuth_bins = 3; }},
+        BadValue{"min_line_points", [](DetectorParams& p) { p.min_line_points = 1; }},
+        BadValue{"max_step_height_m", [](DetectorParams& p) { p.max_step_height_m = 0.05; }},
+        BadValue{"min_slope_deg", [](DetectorParams& p) { p.min_slope_deg = 70; }},
+        BadValue{"point_sigma_m", [](DetectorParams& p) { p.point_sigma_m = -1; }},
+        BadValue{"split_noise_factor", [](DetectorParams& p) { p.split_noise_factor = -1; }},
+        BadValue{"max_split_distance_m",  // below the fixed d_p it would raise
+                 [](DetectorParams& p) { p.max_split_distance_m = 0.02; }},
+        BadValue{"floor_tolerance_m", [](DetectorParams& p) { p.floor_tolerance_m = 0.2; }},
+        BadValue{"max_level_tread_depth_m",  // below the usual run bound
+                 [](DetectorParams& p) { p.max_level_tread_depth_m = 0.3; }},
+        BadValue{"tilted_ring_row_height_m",  // rows no taller than the first pass's
+                 [](DetectorParams& p) { p.tilted_ring_row_height_m = 0.02; }},
+        BadValue{"tilted_ring_row_height_m",
+                 [](DetectorParams& p) { p.tilted_ring_row_height_m = 0.5; }},
+        BadValue{"max_double_step_rise_m",  // under two of the smallest rises
+                 [](DetectorParams& p) { p.max_double_step_rise_m = 0.15; }},
+        BadValue{"max_double_step_rise_m",  // beyond condition 1's bound
+                 [](DetectorParams& p) { p.max_double_step_rise_m = 0.5; }},
+        BadValue{"min_level_tread_slope_deg",  // above the usual slope bound
+                 [](DetectorParams& p) { p.min_level_tread_slope_deg = 30; }},
+        BadValue{"min_deep_tread_m",  // deeper than the deep search reaches
+                 [](DetectorParams& p) { p.min_deep_tread_m = 0.7; }},
+        BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }},
+        // Top-view grid over the memory budget (the far-extent case of issue 8).
+        BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},
+        BadValue{"max_range_m",
+                 [](DetectorParams& p) {
+                     p.max_range_m = 21;
+                     p.leaf_size_m = 0.01;
+                 }}),
     [](const testing::TestParamInfo<BadValue>& param_info) {
         return param_info.param.field + "_" + std::to_string(param_info.index);
     });

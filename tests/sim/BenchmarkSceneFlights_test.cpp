@@ -100,6 +100,34 @@ INSTANTIATE_TEST_SUITE_P(SpiralRiserHitsOnly, MissedBefore,
                          testing::Values(SceneCase{4004, 222, 0.01, 0.03, true,
                                                    "level VLP-16 at 3.4 m, spiral's riser hits"}));
 
+// LiDARs pitched down 27-28 deg see flights 30-40 deg off their pitch axis, 6 m away: the rings
+// cross each riser at a slant, so a riser's hits spread over several 2.5 cm rows, each piece too
+// short for a line. The tilted-ring pass (rows of 5 cm) finds them: an open-sided flight seen
+// side-on (OS0-128, dev r0175) and one between a railing and a wall (OS0-128, dev3 r0279, from a
+// platform). The second flight of dev2 r0008 was found in part (4 of 13 steps); the pass finds
+// its upper steps, which must join it, not stand as a second flight on the same truth.
+INSTANTIATE_TEST_SUITE_P(
+    TiltedRings, MissedBefore,
+    testing::Values(SceneCase{1001, 175, 0.01, 0.02, true, "OS0-128 pitched 28 deg, side-on"},
+                    SceneCase{4004, 279, 0.01, 0.02, true, "OS0-128 pitched 27 deg"},
+                    SceneCase{3003, 8, 0.01, 0.02, false, "upper steps found by the pass", 1}));
+
+TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
+    const sim::RandomCloud scene = test::benchmarkScene(1001, 175);
+    ASSERT_EQ(scene.truth.staircases.size(), 1u);
+    const auto onTruth = [&](const DetectorParams& p) {
+        int n = 0;
+        for (const Staircase& s :
+             StairDetector(p).detect(scene.cloud, scene.truth.observer_floor_z).staircases)
+            n += test::reportsFlight(s, scene.truth.staircases.front());
+        return n;
+    };
+    DetectorParams off;
+    off.tilted_ring_row_height_m = 0.0;
+    EXPECT_EQ(onTruth(off), 0);
+    EXPECT_EQ(onTruth(DetectorParams{}), 1);
+}
+
 // A negative of a third development set (seed 4004): a 14 deg ramp up, 3.5 m wide, 2.6 m from a
 // level LiDAR. Its ring hits chain into a "flight" of 0.078 m rises; condition 1 on the whole
 // flight (less 2 cm of measurement noise) rejects it.

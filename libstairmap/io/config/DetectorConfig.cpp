@@ -78,6 +78,7 @@ void readPreprocessing(const SectionReader& r, DetectorParams& p) {
     r.number("max_height_above_floor_m", p.max_height_above_floor_m);
     r.number("max_depth_below_floor_m", p.max_depth_below_floor_m);
     r.number("row_height_m", p.row_height_m);
+    r.number("tilted_ring_row_height_m", p.tilted_ring_row_height_m);
     r.integer("azimuth_bins", p.azimuth_bins);
     r.number("edge_min_dz_m", p.edge_min_dz_m);
     r.number("edge_spill_dz_m", p.edge_spill_dz_m);

@@ -79,6 +79,7 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_DOUBLE_EQ(c.params.min_level_tread_slope_deg, d.min_level_tread_slope_deg);
     EXPECT_DOUBLE_EQ(c.params.min_deep_tread_m, d.min_deep_tread_m);
     EXPECT_DOUBLE_EQ(c.params.max_double_step_rise_m, d.max_double_step_rise_m);
+    EXPECT_DOUBLE_EQ(c.params.tilted_ring_row_height_m, d.tilted_ring_row_height_m);
     EXPECT_EQ(c.params.azimuth_bins, d.azimuth_bins);
     EXPECT_EQ(c.params.min_steps, d.min_steps);
     ASSERT_TRUE(c.robot_height_m.has_value());
