@@ -500,8 +500,12 @@ void addTiltedRingFlights(const PointCloud& cloud, const std::vector<TopViewCell
                           std::vector<Staircase>& found) {
     DetectorParams tall = p;
     tall.row_height_m = user.tilted_ring_row_height_m;
+    // Condition 1 outright (without dropFlightsBelowARise's 2 cm of noise): a ramp beside a
+    // pitched LiDAR, its slanted rings cut by the taller rows, reads as 0.099 m rises (check
+    // r0165); the pass's flights on the three development sets read 0.11 m or more but one.
     for (Staircase& s : findFlights(cloud, cells, floor_z, tall, user, found, nullptr))
-        if (!overlapsAnyFlight(s, found)) found.push_back(std::move(s));
+        if (!overlapsAnyFlight(s, found) && s.step_height >= user.min_step_height_m)
+            found.push_back(std::move(s));
     // A flight the first pass found in part may go on beyond its footprint (dev2 r0008: its
     // upper seven steps, seen by the tilted rings only).
     joinContinuedFlights(found, joinParams(user));

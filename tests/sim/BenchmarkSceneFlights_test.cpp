@@ -139,5 +139,18 @@ TEST(NegativeScene, ARampSeenByALevelLidarIsNoFlight) {
     EXPECT_TRUE(result.staircases.empty()) << result.staircases.size() << " staircases";
 }
 
+// The check set's one false positive on a negative after the tilted-ring pass came in (seed 2002,
+// scene 165, looked at after scoring): a 13 deg ramp 4.5 m beside an HDL-32 pitched down 29 deg.
+// The rings climb it at a slant, and the pass's 5 cm rows cut them into a chain of 0.099 m
+// "rises", above dropFlightsBelowARise's bound (0.11 m less 2 cm of noise). The pass's flights
+// must meet condition 1 outright. (The same ramp rebuilt with other sensor noise gives no chain.)
+TEST(NegativeScene, ARampBesideAPitchedLidarIsNoFlight) {
+    const sim::RandomCloud scene = test::benchmarkScene(2002, 165);
+    ASSERT_TRUE(scene.truth.staircases.empty());
+    const DetectionResult result =
+        StairDetector().detect(scene.cloud, scene.truth.observer_floor_z);
+    EXPECT_TRUE(result.staircases.empty()) << result.staircases.size() << " staircases";
+}
+
 }  // namespace
 }  // namespace stairmap
