@@ -56,4 +56,39 @@ bool overlapsAnyFlight(const Staircase& flight, const std::vector<Staircase>& ot
     });
 }
 
+int dropSecondViews(std::vector<Staircase>& flights, const SecondViewParams& params) {
+    const double max_heading = params.max_heading_diff_deg * M_PI / 180.0;
+    std::vector<char> dropped(flights.size(), 0);
+    // Whether `a` is the stronger of the two: more steps, or as many and listed first.
+    const auto stronger = [&](std::size_t a, std::size_t b) {
+        return flights[a].steps.size() > flights[b].steps.size() ||
+               (flights[a].steps.size() == flights[b].steps.size() && a < b);
+    };
+    for (std::size_t i = 0; i < flights.size(); ++i)
+        for (std::size_t j = 0; j < flights.size(); ++j) {
+            if (i == j || dropped[i] || dropped[j] || !stronger(i, j)) continue;
+            const Staircase& keep = flights[i];
+            const Staircase& weak = flights[j];
+            if (keep.direction != weak.direction || weak.steps.empty()) continue;
+            const double turn = std::remainder(keep.heading_rad - weak.heading_rad, 2.0 * M_PI);
+            if (std::abs(turn) > max_heading) continue;
+            const auto on =
+                std::count_if(weak.steps.begin(), weak.steps.end(), [&](const StairEdge& e) {
+                    return onFlightFootprint(e.centre().head<2>(), keep, params.footprint);
+                });
+            if (static_cast<double>(on) >=
+                params.min_on_fraction * static_cast<double>(weak.steps.size()))
+                dropped[j] = 1;
+        }
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < flights.size(); ++i) {
+        if (dropped[i]) continue;
+        if (out != i) flights[out] = std::move(flights[i]);
+        ++out;
+    }
+    const int removed = static_cast<int>(flights.size() - out);
+    flights.resize(out);
+    return removed;
+}
+
 }  // namespace stairmap

@@ -31,4 +31,21 @@ bool onAnyFlightFootprint(const Eigen::Vector2d& p, const std::vector<Staircase>
 bool overlapsAnyFlight(const Staircase& flight, const std::vector<Staircase>& others,
                        const FlightFootprintParams& params = {});
 
+/// Second views of one flight that Algorithm 2 (OverlappingFlights.h) leaves apart: two chains
+/// through a flight's scattered nosings whose levels differ (a depth camera's chains of 0.19 and
+/// 0.17 m rises on one 0.177 m flight, dev3 r0042), so no edge of one is the same stair as an edge
+/// of the other. Seen from above they cover the same ground along the same heading.
+struct SecondViewParams {
+    double max_heading_diff_deg = 20.0;  ///< [deg] the two headings agree within this
+    double min_on_fraction = 0.5;  ///< [-] of the shorter flight's edges on the longer's footprint
+    FlightFootprintParams footprint{0.30, 0.0};  ///< the footprint's box only (straight flights)
+};
+
+/// Of two same-direction flights in `flights` with headings within max_heading_diff_deg, drops the
+/// one with fewer steps (the later one on a tie) when at least min_on_fraction of its edge centres
+/// lie on the other's footprint. Flights side by side (beyond the lateral margin), one beyond the
+/// other along the heading, and a flight above another with the opposite heading (a switchback)
+/// are kept. Returns how many were dropped. O(n^2 k^2) for n flights of k steps.
+int dropSecondViews(std::vector<Staircase>& flights, const SecondViewParams& params = {});
+
 }  // namespace stairmap

@@ -571,6 +571,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     // same levels, their found edges side by side, but their measured treads overlap.
     mergeOverlappingFlights(result.staircases);
     dropFlightsBelowARise(params_, result.staircases);
+    dropSecondViews(result.staircases);  // the chains Algorithm 2 left: levels differ (dev3 r0042)
     if (debug) debug->accepted = result.staircases;
     return result;
 }

@@ -75,5 +75,39 @@ TEST(FlightFootprint, AFlightOverlapsAnotherWhenOneOfItsEdgesLiesOnIt) {
     EXPECT_FALSE(overlapsAnyFlight(beside, {}));
 }
 
+/// `s` moved by (dx, dy, dz) [m].
+Staircase moved(Staircase s, double dx, double dy, double dz) {
+    for (StairEdge& e : s.steps) {
+        e.start += Eigen::Vector3d(dx, dy, dz);
+        e.end += Eigen::Vector3d(dx, dy, dz);
+    }
+    return s;
+}
+
+TEST(SecondViews, AShorterChainOverTheSameGroundAtOtherLevelsIsDropped) {
+    // A second chain through the same flight, its levels 4 cm off and one step fewer, shifted a
+    // little sideways: the longer chain stays, whichever comes first.
+    Staircase second = moved(straightFlight(), 0.05, 0.2, 0.04);
+    second.steps.pop_back();
+    std::vector<Staircase> flights{second, straightFlight()};
+    EXPECT_EQ(dropSecondViews(flights), 1);
+    ASSERT_EQ(flights.size(), 1u);
+    EXPECT_EQ(flights.front().steps.size(), 4u);
+}
+
+TEST(SecondViews, FlightsBesideBeyondOrTheOtherWayAreKept) {
+    std::vector<Staircase> flights{straightFlight(),
+                                   moved(straightFlight(), 0.0, kWidth + 0.5, 0.0),     // beside
+                                   moved(straightFlight(), 4 * kRun + 0.5, 0.0, 1.0)};  // beyond
+    Staircase down = straightFlight();  // the same ground the other way (a descent, or a
+    down.heading_rad = M_PI;            // switchback's flight above)
+    flights.push_back(moved(down, 0.0, 0.0, 1.5));
+    Staircase descending = straightFlight();
+    descending.direction = StairDirection::Descending;
+    flights.push_back(descending);
+    EXPECT_EQ(dropSecondViews(flights), 0);
+    EXPECT_EQ(flights.size(), 5u);
+}
+
 }  // namespace
 }  // namespace stairmap

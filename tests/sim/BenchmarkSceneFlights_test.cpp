@@ -112,6 +112,15 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{4004, 279, 0.01, 0.02, true, "OS0-128 pitched 27 deg"},
                     SceneCase{3003, 8, 0.01, 0.02, false, "upper steps found by the pass", 1}));
 
+// Second views that Algorithm 2 leaves apart, their levels differing from the first's: a depth
+// camera's two chains of 0.19 and 0.17 m rises on a 0.177 m flight (dev3 r0042), and a level
+// HDL-32's chain through a debris flight's far side beside the found one (dev3 r0092). Each flight
+// is reported once (dropSecondViews); its rise read 1.5-1.8 cm off.
+INSTANTIATE_TEST_SUITE_P(
+    SecondViews, MissedBefore,
+    testing::Values(SceneCase{4004, 42, 0.02, 0.03, true, "depth camera, two chains"},
+                    SceneCase{4004, 92, 0.02, 0.03, true, "level HDL-32, debris flight"}));
+
 TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
     const sim::RandomCloud scene = test::benchmarkScene(1001, 175);
     ASSERT_EQ(scene.truth.staircases.size(), 1u);
