@@ -141,6 +141,16 @@ std::vector<std::pair<int, Radial>> indexOnRise(const std::vector<Radial>& level
     return best;
 }
 
+/// [m] lowest rise a helix may read (condition 1 less its noise)
+double lowestRise(const SpiralSearchParams& p) { return p.min_rise_m - p.low_rise_noise_m; }
+
+/// Condition 1 on a helix of `levels` levels, `seen` of them with a line: a rise read below
+/// min_rise_m (within its noise) counts only with few levels put back (SpiralSearchParams).
+bool riseOfAStair(double rise, int levels, int seen, const SpiralSearchParams& p) {
+    if (rise < lowestRise(p) || rise > p.max_rise_m) return false;
+    return rise >= p.min_rise_m || levels - seen <= p.max_put_back_below_min_rise;
+}
+
 /// Step index of every level: on the rise (a gap between two levels, or half of it: every other
 /// nosing seen) and from the reference level that index the most levels, each unseen level in
 /// between counting against (a small rise fits stray levels), then the least misfit. Empty when
@@ -153,7 +163,8 @@ std::vector<std::pair<int, Radial>> indexLevels(const std::vector<Radial>& level
     for (std::size_t i = 1; i < levels.size(); ++i) {
         const double g = levels[i].z - levels[i - 1].z;
         for (double r0 : {g, 0.5 * g}) {
-            if (r0 < p.min_rise_m - p.height_tolerance_m || r0 > p.max_rise_m + p.height_tolerance_m)
+            if (r0 < lowestRise(p) - p.height_tolerance_m ||
+                r0 > p.max_rise_m + p.height_tolerance_m)
                 continue;
             for (const Radial& ref : levels) {
                 double misfit = 0.0;
@@ -380,7 +391,8 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
     if (static_cast<int>(idx.size()) < p.min_seen_levels) return f;
     const int levels = idx.back().first - idx.front().first + 1;
     const double first_z = idx.front().second.z - p.floor_z;
-    if (levels < p.min_steps || rise < p.min_rise_m || rise > p.max_rise_m) return f;
+    if (levels < p.min_steps || !riseOfAStair(rise, levels, static_cast<int>(idx.size()), p))
+        return f;
     if (first_z < p.min_first_height_m || first_z > p.max_first_height_m) return f;
     const double step_angle = std::abs(h.omega) * rise;
     if (step_angle < p.min_step_angle_deg * kDeg || step_angle > p.max_step_angle_deg * kDeg) return f;
@@ -419,7 +431,7 @@ bool helixThrough(const Radial& ra, const Radial& rb, const SpiralSearchParams& 
     h.z0 = ra.z;
     h.phi0 = ra.phi;
     h.omega = wrapAngle(rb.phi - ra.phi) / (rb.z - ra.z);
-    return std::abs(h.omega) * p.min_rise_m >= p.min_step_angle_deg * kDeg * 0.5;
+    return std::abs(h.omega) * lowestRise(p) >= p.min_step_angle_deg * kDeg * 0.5;
 }
 
 /// Axis candidate of a pair of lines: their intersection, when both are radial about it.
@@ -465,7 +477,7 @@ SpiralFlight bestOfPairs(const SpiralLines& sl, const std::vector<char>& used,
         for (int j = 0; j < n; ++j) {
             const double dz = sl[j].z - sl[i].z;
             if (used[i] || used[j] || (explored[i] && explored[j])) continue;
-            if (dz < p.min_rise_m - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
+            if (dz < lowestRise(p) - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
             std::vector<Radial> in;
             SpiralFlight f = ofPair(i, j, in);
             if (f.edges.empty()) continue;
@@ -595,7 +607,8 @@ SpiralFlight rimSpiralOfPair(const SpiralLines& sl, int i, int j, const std::vec
     if (static_cast<int>(idx.size()) < p.min_seen_levels) return f;
     const int levels = idx.back().first - idx.front().first + 1;
     const double first_z = idx.front().second.z - p.floor_z;
-    if (levels < p.min_steps || rise < p.min_rise_m || rise > p.max_rise_m) return f;
+    if (levels < p.min_steps || !riseOfAStair(rise, levels, static_cast<int>(idx.size()), p))
+        return f;
     if (first_z < p.min_first_height_m || first_z > p.max_first_height_m) return f;
     const double step = h.omega * rise;  // signed: the ascent's sense
     if (std::abs(step) < p.min_step_angle_deg * kDeg || std::abs(step) > p.max_step_angle_deg * kDeg)

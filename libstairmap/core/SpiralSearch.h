@@ -41,6 +41,14 @@ struct SpiralSearchParams {
     double max_first_height_m = 1.05;      ///< [m] the lowest found nosing must be below this
     double min_rise_m = 0.11;              ///< [m] rise range (DetectorParams condition 1)
     double max_rise_m = 0.30;              ///< [m]
+    /// [m] a helix's rise may read this much below min_rise_m (rises of 0.10-0.11 m read
+    /// 0.093-0.107 m; the straight flights' kFlightRiseNoise) ...
+    double low_rise_noise_m = 0.02;
+    /// [-] ... when at most this many of its levels are put back: a finer helix through a
+    /// spiral's nosings indexes more levels than the true one only by putting unseen ones back
+    /// between them (dev r0047: 2 of 8, dev2 r0066: 4 of 15, each a true rise of 0.104 / 0.126 m
+    /// read as 0.103 m), where the low-rise spirals found by it put back 0 or 1
+    int max_put_back_below_min_rise = 1;
     double min_run_m = 0.15;               ///< [m] run at mid radius (condition 2)
     double max_run_m = 0.45;               ///< [m]
     double min_step_angle_deg = 10.0;      ///< [deg] turn per step: below this the flight is straight

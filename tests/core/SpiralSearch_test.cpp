@@ -128,6 +128,43 @@ TEST(SpiralSearch, PutsBackUnseenLevelsOnTheHelix) {
     }
 }
 
+// Rises of 0.10-0.11 m (below condition 1's 0.11 m) read 0.093-0.107 m: a helix seen at every
+// level with rises of 0.102 m is a spiral (dev3 r0068 read aliased, at 1.5 rises, before).
+TEST(SpiralSearch, FindsASpiralWhoseRiseReadsJustBelowConditionOne) {
+    Helix h;
+    h.rise = 0.102;
+    h.step = 30.0 * kDeg;
+    std::vector<LineSegment> front;
+    for (int k = 1; k <= 7; ++k) front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    const auto spirals = findSpirals(front, {}, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 7u);
+    EXPECT_NEAR(f.step_angle_rad, h.step, 1.0 * kDeg);
+    for (int k = 1; k <= 7; ++k) EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
+}
+
+// Below condition 1 a helix may put back at most one unseen level: a finer helix through a
+// spiral's nosings indexes more levels only by putting unseen ones back (dev2 r0066). The same
+// lines with a rise within condition 1 are a spiral.
+TEST(SpiralSearch, ALowRiseHelixPuttingBackTwoLevelsIsNoSpiral) {
+    for (double rise : {0.100, 0.125}) {
+        Helix h;
+        h.rise = rise;
+        h.step = 30.0 * kDeg;
+        std::vector<LineSegment> front;
+        for (int k : {1, 2, 4, 6, 7}) front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+        const auto spirals = findSpirals(front, {}, paramsFor(h));
+        if (rise < paramsFor(h).min_rise_m) {
+            EXPECT_TRUE(spirals.empty()) << rise;
+        } else {
+            ASSERT_EQ(spirals.size(), 1u) << rise;
+            EXPECT_EQ(spirals[0].edges.size(), 7u);
+            EXPECT_EQ(spirals[0].seen_levels, 5);
+        }
+    }
+}
+
 TEST(SpiralSearch, TurnsBackEdgesOntoTheirNosings) {
     // Treads above a level LiDAR: some levels are seen only by their back edge, where the next
     // wedge rises (at height z_k, the angle of nosing k+1).

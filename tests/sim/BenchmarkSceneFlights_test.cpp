@@ -100,6 +100,15 @@ INSTANTIATE_TEST_SUITE_P(SpiralRiserHitsOnly, MissedBefore,
                          testing::Values(SceneCase{4004, 222, 0.01, 0.03, true,
                                                    "level VLP-16 at 3.4 m, spiral's riser hits"}));
 
+// Spirals of 0.104-0.105 m rises (below condition 1's 0.11 m; the generator draws 0.10-0.22 m):
+// a level OS1-64's 3.3 m view (dev3 r0068) was found only aliased at 1.5 rises (run 14.6 cm long),
+// a level OS1-64's 5 m view (dev2 r0212) not at all, until a helix's rise may read 2 cm below
+// condition 1 with at most one level put back (SpiralSearchParams::low_rise_noise_m).
+INSTANTIATE_TEST_SUITE_P(
+    LowRiseSpirals, MissedBefore,
+    testing::Values(SceneCase{4004, 68, 0.01, 0.03, true, "level OS1-64 at 3.3 m, 0.104 m rises"},
+                    SceneCase{3003, 212, 0.015, 0.03, true, "level OS1-64 at 5 m, 0.105 m rises"}));
+
 // LiDARs pitched down 27-28 deg see flights 30-40 deg off their pitch axis, 6 m away: the rings
 // cross each riser at a slant, so a riser's hits spread over several 2.5 cm rows, each piece too
 // short for a line. The tilted-ring pass (rows of 5 cm) finds them: an open-sided flight seen
