@@ -17,6 +17,13 @@ double quantile(std::vector<double> v, double q) {
     return v[static_cast<std::size_t>(k)];
 }
 
+/// The median, or of the two middle values the lower one (an even count).
+double lowerMedian(std::vector<double> v) {
+    const auto k = static_cast<std::ptrdiff_t>((v.size() - 1) / 2);
+    std::nth_element(v.begin(), v.begin() + k, v.end());
+    return v[static_cast<std::size_t>(k)];
+}
+
 }  // namespace
 
 std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlightParams& p) {
@@ -54,7 +61,7 @@ std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlig
     if (2 * radial <= static_cast<int>(n) || inner.empty()) return std::nullopt;
     t.step_angle_rad = std::abs(slopeAgainstIndex(phi));
     if (t.step_angle_rad < p.min_step_angle_deg * M_PI / 180.0) return std::nullopt;
-    t.inner_radius_m = quantile(inner, 0.5);
+    t.inner_radius_m = lowerMedian(inner);  // hidden inner parts only read long
     t.outer_radius_m = quantile(outer, 0.5);
     t.run_m = (t.inner_radius_m + t.outer_radius_m) * std::sin(0.5 * t.step_angle_rad);
     return t;

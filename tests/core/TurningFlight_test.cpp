@@ -52,6 +52,23 @@ TEST(TurningFlight, RunAtMidRadiusOfASpiralSeenPartly) {
     }
 }
 
+// A far view of a 4-step spiral (dev3 r0229): the column and the wedges below hide the inner part
+// of two of the four nosings (seen from 0.47 and 0.66 m out on a 0.19 m column). The column's
+// radius comes from the nosings that reach it; the median of the inner ends read the run 5 cm long.
+TEST(TurningFlight, RunOfASpiralWhoseNosingsAreHiddenNearTheColumn) {
+    Spiral sp;
+    sp.inner = 0.19;
+    sp.outer = 1.29;
+    sp.step = 24.0 * kDeg;
+    Staircase s;
+    const double from[] = {0.66, 0.20, 0.21, 0.47};
+    for (int k = 0; k < 4; ++k) s.steps.push_back(nosing(sp, k, from[k], sp.outer));
+    const auto t = turningFlight(s);
+    ASSERT_TRUE(t.has_value());
+    EXPECT_NEAR(t->inner_radius_m, sp.inner, 0.025);  // the nearest seen from 1-2 cm off it
+    EXPECT_NEAR(t->run_m, sp.run(), 0.01);
+}
+
 TEST(TurningFlight, StraightFlightsAndNoisyEdgesHaveNone) {
     Staircase straight;
     for (int k = 0; k < 6; ++k) {

@@ -109,6 +109,16 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{4004, 68, 0.01, 0.03, true, "level OS1-64 at 3.3 m, 0.104 m rises"},
                     SceneCase{3003, 212, 0.015, 0.03, true, "level OS1-64 at 5 m, 0.105 m rises"}));
 
+// Spirals found as a 4-step turning chain by level LiDARs 7-7.5 m away (dev3 r0229, r0135): the
+// column and the wedges below hide the inner part of two nosings, whose inner ends read 0.47-0.85 m
+// from the axis on a 0.19-0.26 m column. With the median of the inner ends their runs read 4.8 and
+// 5.3 cm long; the lower median (TurningFlight) reads them within 1.2 cm.
+INSTANTIATE_TEST_SUITE_P(FarSpiralChains, MissedBefore,
+                         testing::Values(SceneCase{4004, 229, 0.01, 0.02, true,
+                                                   "level HDL-32 at 7 m, 4-step chain"},
+                                         SceneCase{4004, 135, 0.015, 0.02, true,
+                                                   "level OS1-64 at 7.5 m, 4-step chain"}));
+
 // LiDARs pitched down 27-28 deg see flights 30-40 deg off their pitch axis, 6 m away: the rings
 // cross each riser at a slant, so a riser's hits spread over several 2.5 cm rows, each piece too
 // short for a line. The tilted-ring pass (rows of 5 cm) finds them: an open-sided flight seen
