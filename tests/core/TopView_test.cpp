@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <thread>
 
 namespace stairmap {
 namespace {
@@ -202,6 +203,29 @@ TEST(TopView, NonFinitePointsAndPointsOutOfRangeOrBandAreIgnored) {
     buildTopView(clean, stepParams(), a);
     buildTopView(dirty, stepParams(), b);
     EXPECT_TRUE(sameCells(a, b));
+}
+
+// The grid is scratch memory kept per thread between calls, and each call clears only what it
+// wrote: a wide, dense cloud gridded first (its columns cover the whole scratch grid, at other
+// offsets than the step's) must leave nothing behind for the next cloud, which must read as in a
+// thread that never gridded anything.
+TEST(TopView, NothingOfAnEarlierCloudRemainsInTheNext) {
+    const PointCloud step = stepCloud();
+    std::vector<TopViewCell> fresh;
+    std::thread([&] { buildTopView(step, stepParams(), fresh); }).join();
+    ASSERT_FALSE(fresh.empty());
+
+    PointCloud wide;
+    for (int i = 0; i < 640; ++i)
+        for (int j = 0; j < 640; ++j) {
+            const float x = -8.f + 0.025f * i + 0.0123f, y = -8.f + 0.025f * j + 0.0117f;
+            wide.emplace_back(x, y, (i / 40 + j / 40) % 2 ? 0.4f : -0.2f);  // 1 m checkerboard
+        }
+    std::vector<TopViewCell> before, after;
+    buildTopView(wide, stepParams(), before);
+    ASSERT_FALSE(before.empty());
+    buildTopView(step, stepParams(), after);
+    EXPECT_TRUE(sameCells(fresh, after));
 }
 
 TEST(TopView, EmptyAndAllInvalidCloudsGiveNoCells) {
