@@ -147,6 +147,9 @@ void prependFloorNosing(const std::vector<TopViewCell>& cells, double floor_z,
     if (nosing) edges.insert(edges.begin(), *nosing);
 }
 
+/// [m] noise of a flight's rise measured over all its steps, after the sparse-mode corrections
+constexpr double kFlightRiseNoise = 0.02;
+
 /// Debug record of one direction: its lines (real z) and the chains the search refused.
 void recordDirection(const std::vector<LineSegment>& lines, const std::vector<char>& used,
                      const std::vector<int>& refused, StairDirection dir, double floor_z,
@@ -262,6 +265,18 @@ bool mayContinue(const std::vector<LineSegment>& edges, const DetectorParams& p)
            isRegularStraightChain(edges, continuationParams(p));
 }
 
+/// A descending chain one edge short of min_steps whose floor edge was not found (cropped out of
+/// an elevation map, hidden, or the flight starts from a landing below the floor) counts when it
+/// is a regular straight flight whose first nosing lies a full rise (less its noise) or more
+/// below the floor: the floor's or landing's edge above it is then its unseen top nosing. Steps
+/// into a pit read their first nosing 0.6-0.75 rises below the floor (dev2 r0024, dev3 r0081).
+bool impliesTopNosing(const std::vector<LineSegment>& edges, double floor_z,
+                      const DetectorParams& p) {
+    if (static_cast<int>(edges.size()) != p.min_steps - 1 || edges.size() < 2) return false;
+    const double rise = (edges.front().z - edges.back().z) / static_cast<double>(edges.size() - 1);
+    return floor_z - edges.front().z >= rise - kFlightRiseNoise;
+}
+
 /// One direction's flights from the lines of `cells`, leaving out the lines on `found_before`.
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
                      StairDirection dir, double floor_z, const DetectorParams& p,
@@ -311,7 +326,8 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         std::vector<LineSegment> edges = edgesOf(lines, chain);
         correct(edges);
         if (!up) prependFloorNosing(cells, floor_z, p, edges);
-        if (static_cast<int>(edges.size()) < p.min_steps) {
+        if (static_cast<int>(edges.size()) < p.min_steps &&
+            (up || !impliesTopNosing(edges, floor_z, p))) {
             if (debug && debug->rejected.size() < DetectorDebug::kMaxRejected)
                 debug->rejected.push_back({dir, edges, tooFewSteps(edges.size(), p.min_steps) +
                                                            " (no floor nosing)"});
@@ -510,9 +526,6 @@ void addTiltedRingFlights(const PointCloud& cloud, const std::vector<TopViewCell
     // upper seven steps, seen by the tilted rings only).
     joinContinuedFlights(found, joinParams(user));
 }
-
-/// [m] noise of a flight's rise measured over all its steps, after the sparse-mode corrections
-constexpr double kFlightRiseNoise = 0.02;
 
 /// Condition 1 on whole flights. The sparse-mode tolerance admits single pairs read low by riser
 /// hits; once corrected, a flight's rise is measured over all its steps, and one still below

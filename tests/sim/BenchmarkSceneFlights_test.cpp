@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <ostream>
+#include <utility>
 
 #include "core/Evaluation.h"
 #include "core/StairDetector.h"
@@ -119,6 +120,17 @@ INSTANTIATE_TEST_SUITE_P(FarSpiralChains, MissedBefore,
                                          SceneCase{4004, 135, 0.015, 0.02, true,
                                                    "level OS1-64 at 7.5 m, 4-step chain"}));
 
+// Descending flights of three seen nosings whose top edge was not found: elevation maps cropped at
+// +-4 m past their third step, the flight starting on a landing one step below the floor (dev3
+// r0118) or two to three steps below it (dev2 r0291, dev3 r0187). Each was refused as a 1-2 step
+// stage until a regular chain whose first nosing lies a full rise or more below the floor counts
+// (the floor's or landing's edge above it is its unseen top nosing).
+INSTANTIATE_TEST_SUITE_P(
+    DescentsWithoutTheirTopEdge, MissedBefore,
+    testing::Values(SceneCase{4004, 118, 0.01, 0.02, true, "elevation map, landing 1 step down"},
+                    SceneCase{3003, 291, 0.01, 0.02, true, "elevation map, landing 2 steps down"},
+                    SceneCase{4004, 187, 0.01, 0.02, true, "elevation map, landing 3 steps down"}));
+
 // LiDARs pitched down 27-28 deg see flights 30-40 deg off their pitch axis, 6 m away: the rings
 // cross each riser at a slant, so a riser's hits spread over several 2.5 cm rows, each piece too
 // short for a line. The tilted-ring pass (rows of 5 cm) finds them: an open-sided flight seen
@@ -176,6 +188,22 @@ TEST(NegativeScene, ARampSeenByALevelLidarIsNoFlight) { expectNoFlight(4004, 265
 // "rises", above dropFlightsBelowARise's bound (0.11 m less 2 cm of noise). The pass's flights
 // must meet condition 1 outright. (The same ramp rebuilt with other sensor noise gives no chain.)
 TEST(NegativeScene, ARampBesideAPitchedLidarIsNoFlight) { expectNoFlight(2002, 165); }
+
+// Steps down into a pit, from whose floor a flight rises (dev2 r0024, dev3 r0081, offset by 3
+// steps): the pit's steps read as a descending chain of three whose first nosing lies only 0.6-0.75
+// of its rise below the robot's floor, so the floor's edge cannot be its top nosing. No descending
+// flight is reported (the truth holds the ascending flight only).
+TEST(PitSteps, AreNoDescendingFlight) {
+    for (const auto& [seed, index] : {std::pair{3003, 24}, std::pair{4004, 81}}) {
+        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
+        ASSERT_EQ(scene.truth.staircases.size(), 1u);
+        ASSERT_EQ(scene.truth.staircases[0].seen_as, StairDirection::Ascending);
+        for (const Staircase& s :
+             StairDetector().detect(scene.cloud, scene.truth.observer_floor_z).staircases)
+            EXPECT_EQ(s.direction, StairDirection::Ascending)
+                << "seed " << seed << " scene " << index;
+    }
+}
 
 }  // namespace
 }  // namespace stairmap
