@@ -266,10 +266,11 @@ bool mayContinue(const std::vector<LineSegment>& edges, const DetectorParams& p)
 }
 
 /// A descending chain one edge short of min_steps whose floor edge was not found (cropped out of
-/// an elevation map, hidden, or the flight starts from a landing below the floor) counts when it
-/// is a regular straight flight whose first nosing lies a full rise (less its noise) or more
-/// below the floor: the floor's or landing's edge above it is then its unseen top nosing. Steps
-/// into a pit read their first nosing 0.6-0.75 rises below the floor (dev2 r0024, dev3 r0081).
+/// an elevation map, hidden, or the flight starts from a landing below the floor) counts when its
+/// first nosing lies a full rise (less its noise) or more below the floor: the floor's or
+/// landing's edge above it is then its unseen top nosing. Steps into a pit read their first
+/// nosing 0.6-0.75 rises below the floor (dev2 r0024, dev3 r0081). (Asking for a regular straight
+/// chain as well, like the ascending continuation, kept none of the four dev flights it finds.)
 bool impliesTopNosing(const std::vector<LineSegment>& edges, double floor_z,
                       const DetectorParams& p) {
     if (static_cast<int>(edges.size()) != p.min_steps - 1 || edges.size() < 2) return false;
@@ -448,6 +449,7 @@ void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& f
     sp.min_first_height_m = p.floor_tolerance_m;
     sp.max_first_height_m = p.init_height_factor * p.max_step_height_m;
     sp.min_rise_m = p.min_step_height_m;
+    sp.low_rise_noise_m = kFlightRiseNoise;  // one noise bound for straight flights and spirals
     sp.max_rise_m = p.max_step_height_m;
     sp.min_run_m = p.min_step_depth_m;
     sp.max_run_m = p.max_step_depth_m;

@@ -123,7 +123,7 @@ INSTANTIATE_TEST_SUITE_P(FarSpiralChains, MissedBefore,
 // Descending flights of three seen nosings whose top edge was not found: elevation maps cropped at
 // +-4 m past their third step, the flight starting on a landing one step below the floor (dev3
 // r0118) or two to three steps below it (dev2 r0291, dev3 r0187). Each was refused as a 1-2 step
-// stage until a regular chain whose first nosing lies a full rise or more below the floor counts
+// stage until a chain whose first nosing lies a full rise or more below the floor counts
 // (the floor's or landing's edge above it is its unseen top nosing).
 INSTANTIATE_TEST_SUITE_P(
     DescentsWithoutTheirTopEdge, MissedBefore,
