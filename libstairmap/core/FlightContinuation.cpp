@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/MissingNosings.h"
 
@@ -118,8 +119,11 @@ bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>
     return showsTread(w, half, p);
 }
 
-bool unseenBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
-                          const FlightContinuationParams& p) {
+namespace {
+
+/// No point at or above `min_z` in the window one step beyond the last edge of a regular chain.
+bool emptyBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                         double min_z, const FlightContinuationParams& p) {
     if (!isRegularStraightChain(edges, p)) return false;
     const ChainStep step = chainStep(edges);
     const LineSegment& last = edges.back();
@@ -127,12 +131,24 @@ bool unseenBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment
     const double half = 0.5 * last.length() * (1.0 - 2.0 * p.end_fraction);
     const double s_lo = p.from_runs * step.run, s_hi = p.to_runs * step.run;
     for (const Eigen::Vector3f& q : cloud) {
-        if (!q.allFinite() || q.z() < last.z - p.tread_dz_m) continue;
+        if (!q.allFinite() || q.z() < min_z) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d);
         if (s >= s_lo && s <= s_hi && std::abs(u.dot(d)) <= half) return false;
     }
     return true;
+}
+
+}  // namespace
+
+bool unseenBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                          const FlightContinuationParams& p) {
+    return !edges.empty() && emptyBeyondLastEdge(cloud, edges, edges.back().z - p.tread_dz_m, p);
+}
+
+bool nothingBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                           const FlightContinuationParams& p) {
+    return emptyBeyondLastEdge(cloud, edges, -std::numeric_limits<double>::infinity(), p);
 }
 
 bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegment>& edges,

@@ -76,6 +76,13 @@ bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegm
 bool unseenBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                           const FlightContinuationParams& params = {});
 
+/// Whether `edges` (as above, in any z frame: the descending search's mirrored z too) are a
+/// regular straight flight and no point at all, at any height, was seen in that window: the view
+/// ends there (an elevation map's crop, a shadow), where a pit's floor or the next tread of a
+/// descending flight would be seen.
+bool nothingBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                           const FlightContinuationParams& params = {});
+
 /// The nosing one rise above and one run behind the last edge (unseen, num_points 0), as wide as it.
 LineSegment nextNosing(const std::vector<LineSegment>& edges);
 /// The nosing one rise below and one run in front of the first edge (unseen), as wide as it.

@@ -278,6 +278,19 @@ bool impliesTopNosing(const std::vector<LineSegment>& edges, double floor_z,
     return floor_z - edges.front().z >= rise - kFlightRiseNoise;
 }
 
+/// A descending chain of two nosings below the floor with the floor's edge measured above them
+/// (`edges`, real z, floor edge first), too short for min_steps, counts when the three are a
+/// regular flight and nothing at all is seen one step beyond its lowest edge: the view ends
+/// there (an elevation map cropped at +-4 m two steps down the flight: dev r0007, r0089), where
+/// steps into a pit would show its floor and a longer flight its next tread.
+bool descendsToViewEnd(const PointCloud& cloud, double floor_z, const DetectorParams& p,
+                       const std::vector<LineSegment>& edges) {
+    if (static_cast<int>(edges.size()) != p.min_steps - 1) return false;
+    std::vector<LineSegment> mirrored = edges;  // descending = ascending in mirrored z
+    for (LineSegment& e : mirrored) e.z = 2 * floor_z - e.z;
+    return nothingBeyondLastEdge(cloud, mirrored, continuationParams(p));
+}
+
 /// One direction's flights from the lines of `cells`, leaving out the lines on `found_before`.
 void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
                      StairDirection dir, double floor_z, const DetectorParams& p,
@@ -362,6 +375,18 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         if (const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, continued)) {
             if (!used.empty())  // kept only for the searches below and the debug record
                 for (int idx : *taken) used[idx] = 1;
+            refused.clear();  // not a refusal after all
+        }
+    }
+    if (!up && static_cast<int>(refused.size()) == search.min_steps - 1) {
+        std::vector<LineSegment> edges = edgesOf(lines, refused);
+        correct(edges);
+        const std::size_t below_floor = edges.size();
+        prependFloorNosing(cells, floor_z, p, edges);
+        if (edges.size() == below_floor + 1 && descendsToViewEnd(cloud, floor_z, p, edges)) {
+            out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+            if (!used.empty())
+                for (int idx : refused) used[idx] = 1;
             refused.clear();  // not a refusal after all
         }
     }

@@ -139,5 +139,25 @@ TEST(FlightContinuation, NothingSeenBeyondTheLastEdgeIsAnUnseenTop) {
         unseenBeyondLastEdge(threeTreads(), {step(1), step(2), nosing(1.0 + 3.0 * kRun, 3 * kRise)}));
 }
 
+TEST(FlightContinuation, NothingAtAnyHeightBeyondTheLastEdgeIsTheEndOfTheView) {
+    // A descending flight in the descending search's mirrored z: its "treads" lie below the
+    // edges in the real cloud, so any point beyond the last edge, however low, is seen.
+    const std::vector<LineSegment> edges = {step(1), step(2), step(3)};
+    EXPECT_TRUE(nothingBeyondLastEdge(threeTreads(), edges));
+    // A pit's floor far below the last edge: seen (unseenBeyondLastEdge, which looks only at and
+    // above the last edge's height, would not see it).
+    PointCloud pit = threeTreads();
+    addTread(pit, 1.0 + 3 * kRun, 5.0, -1.0);
+    EXPECT_TRUE(unseenBeyondLastEdge(pit, edges));
+    EXPECT_FALSE(nothingBeyondLastEdge(pit, edges));
+    // A point beside the window (past the edge's end) does not count.
+    PointCloud beside = threeTreads();
+    beside.emplace_back(float(1.0 + 3.5 * kRun), 0.7f, 0.0f);
+    EXPECT_TRUE(nothingBeyondLastEdge(beside, edges));
+    // Not for an irregular chain.
+    EXPECT_FALSE(nothingBeyondLastEdge(threeTreads(),
+                                       {step(1), step(2), nosing(1.0 + 3.0 * kRun, 3 * kRise)}));
+}
+
 }  // namespace
 }  // namespace stairmap

@@ -7,9 +7,10 @@
 #include <cmath>
 #include <functional>
 
-#include "support/DetectionMatching.h"
 #include "core/StairDetector.h"
 #include "core/StaircaseGeometry.h"
+#include "support/DetectionMatching.h"
+#include "support/HeightField.h"
 
 namespace stairmap::test {
 namespace {
@@ -24,11 +25,8 @@ constexpr double kFlightX = 2.1;   // [m] the flight's first riser
 /// One point per cell over x in [-1, x_max), y in [-1, 1] at the floor plus h(x) (a 2.5D map: the
 /// top surface only; nothing mapped beyond x_max).
 PointCloud heightField(const std::function<double(double)>& h, double x_max = 4.0) {
-    PointCloud cloud;
-    for (double x = -1.0; x < x_max; x += kCell)
-        for (double y = -1.0; y <= 1.0; y += kCell)
-            cloud.emplace_back(float(x), float(y), float(kFloorZ + h(x)));
-    return cloud;
+    return test::heightField([&](double x, double) { return kFloorZ + h(x); }, -1.0, x_max, 1.0,
+                             kCell);
 }
 
 /// Three rises of kRise from x = kFlightX, `run` apart, above a surface at `base` [m].

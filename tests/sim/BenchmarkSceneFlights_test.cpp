@@ -131,6 +131,17 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{3003, 291, 0.01, 0.02, true, "elevation map, landing 2 steps down"},
                     SceneCase{4004, 187, 0.01, 0.02, true, "elevation map, landing 3 steps down"}));
 
+// Descending flights seen down to the end of the view two steps below the floor: the floor's edge
+// and two nosings, too few for min_steps, count because nothing at all is seen one step beyond the
+// lowest (descendsToViewEnd): elevation maps cropped at +-4 m (dev r0007, a 0.67 m flight between
+// a wall and a railing; dev2 r0127, 16 steps of 0.19 m) and a depth camera pitched down 31 deg
+// whose view ends there (dev r0226).
+INSTANTIATE_TEST_SUITE_P(
+    DescentsToTheViewEnd, MissedBefore,
+    testing::Values(SceneCase{1001, 7, 0.01, 0.02, true, "elevation map, cropped 2 steps down"},
+                    SceneCase{3003, 127, 0.01, 0.02, true, "elevation map, 0.19 m rises"},
+                    SceneCase{1001, 226, 0.01, 0.02, true, "depth camera pitched 31 deg"}));
+
 // LiDARs pitched down 27-28 deg see flights 30-40 deg off their pitch axis, 6 m away: the rings
 // cross each riser at a slant, so a riser's hits spread over several 2.5 cm rows, each piece too
 // short for a line. The tilted-ring pass (rows of 5 cm) finds them: an open-sided flight seen
