@@ -229,11 +229,15 @@ Extent measure(const TreadScan& t, const StepExtentParams& p) {
     return x;
 }
 
-/// Sets the edge to the measured extent (never shorter).
+/// Sets the edge to the measured extent (never shorter). The extent ends at the centres of its
+/// outermost tread bins, where their points lie on average: their outer boundaries read every
+/// step half a bin long at each end (elevation maps' walled flights read 1.6 cm wide in the
+/// median; width MAE dev / dev2 / dev3 6.82 / 8.04 / 7.27 -> 6.44 / 7.70 / 6.93 cm, with a quarter
+/// bin in from the boundaries 6.59 / 7.83 / 7.04, a whole bin 6.56 / 7.86 / 7.13).
 void applyExtent(const TreadScan& t, const Extent& x, const StepExtentParams& p, StairEdge& e) {
     const Eigen::Vector3d c = e.centre(), u(t.edge_u.x(), t.edge_u.y(), 0.0);
-    if (x.lo < t.edge_lo) e.start = c + (t.t0 + x.lo * p.bin_m) * u;
-    if (x.hi > t.edge_hi) e.end = c + (t.t0 + (x.hi + 1) * p.bin_m) * u;
+    if (x.lo < t.edge_lo) e.start = c + (t.t0 + (x.lo + 0.5) * p.bin_m) * u;
+    if (x.hi > t.edge_hi) e.end = c + (t.t0 + (x.hi + 0.5) * p.bin_m) * u;
 }
 
 /// Across the flight: lateral positions in one frame for all steps (the steps' own edge

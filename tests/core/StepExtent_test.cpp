@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -68,6 +69,34 @@ TEST(StepExtent, PiecesGrowToTheWholeTreadBetweenAWallAndAnOpenSide) {
     }
     EXPECT_NEAR(s.step_height, kRise, 1e-9);
     EXPECT_NEAR(s.step_depth, kRun, 1e-9);
+}
+
+TEST(StepExtent, ADenseTreadEndsWhereItsOutermostPointsLieNotHalfABinBeyond) {
+    // Treads sampled every centimetre between open sides (the floor seen beyond both ends): each
+    // step's ends lie on the outermost tread points' bins, so on average they lie on the tread's
+    // ends. (The bins' outer boundaries read every end 1.25 cm out on average.)
+    PointCloud c;
+    for (int k = 0; k < kSteps; ++k) {
+        const double x_end = k + 1 < kSteps ? nosingX(k + 1) : nosingX(k) + 1.0;
+        for (double x = nosingX(k); x < x_end; x += 0.02)
+            for (double y = -kHalfWidth - 0.6; y <= kHalfWidth + 0.6; y += 0.01) {
+                const bool tread = std::abs(y) <= kHalfWidth;
+                c.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                               static_cast<float>(tread ? treadZ(k) : kFloor));
+            }
+    }
+    Staircase s = pieces();
+    measureStepExtents(c, s);
+    EXPECT_EQ(s.left_side, StairSide::Open);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+    double overshoot = 0.0;  // [m] mean over the measured ends, outwards positive
+    int ends = 0;
+    for (int k = 0; k + 1 < kSteps; ++k) {  // the landing's edge is not measured
+        overshoot += (s.steps[k].start.y() - kHalfWidth) + (-kHalfWidth - s.steps[k].end.y());
+        ends += 2;
+    }
+    EXPECT_NEAR(overshoot / ends, 0.0, 0.006);
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.02);
 }
 
 TEST(StepExtent, ASideTheViewDoesNotCoverIsUnseenAndTheWidthIsWhatWasSeen) {
