@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/CylindricalRows.h"
 #include "core/FlightContinuation.h"
@@ -18,6 +19,7 @@
 #include "core/RayClearance.h"
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
+#include "core/SpiralColumn.h"
 #include "core/SpiralSearch.h"
 #include "core/StairPairExplain.h"
 #include "core/StairSearch.h"
@@ -565,6 +567,22 @@ void dropFlightsBelowARise(const DetectorParams& p, std::vector<Staircase>& flig
                   flights.end());
 }
 
+/// [m] the column is looked for this far beyond the nosings' inner ends, and this far above the
+/// highest nosing (the column's top above the last tread) and kColumnBelow below the lowest
+constexpr double kColumnReach = 0.10, kColumnAbove = 0.30, kColumnBelow = 0.05;
+
+/// The column of turning flight `s` (SpiralColumn), from the points within the flight's heights.
+std::optional<SpiralColumn> columnOf(const PointCloud& cloud, const Staircase& s,
+                                     const TurningFlight& turning) {
+    double z_lo = std::numeric_limits<double>::infinity(), z_hi = -z_lo;
+    for (const StairEdge& e : s.steps) {
+        z_lo = std::min(z_lo, e.start.z());
+        z_hi = std::max(z_hi, e.start.z());
+    }
+    return fitSpiralColumn(cloud, turning.axis, z_lo - kColumnBelow, z_hi + kColumnAbove,
+                           turning.inner_radius_m + kColumnReach);
+}
+
 }  // namespace
 
 StairDetector::StairDetector(const DetectorParams& params) : params_(params) { params_.validate(); }
@@ -603,6 +621,10 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
         measureStepExtents(cloud_robot, s);  // widths, sides
         if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius
             s.step_depth = turning->run_m;
+            if (const auto column = columnOf(cloud_robot, s, *turning);
+                column && column->radius_m < turning->inner_radius_m)  // inner ends read long
+                s.step_depth = (column->radius_m + turning->outer_radius_m) *
+                               std::sin(0.5 * turning->step_angle_rad);
             s.slope_rad = std::atan2(s.step_height, s.step_depth);
         }
     }

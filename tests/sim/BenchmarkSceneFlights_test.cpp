@@ -142,6 +142,15 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{3003, 127, 0.01, 0.02, true, "elevation map, 0.19 m rises"},
                     SceneCase{1001, 226, 0.01, 0.02, true, "depth camera pitched 31 deg"}));
 
+// Spirals whose nosings' inner ends read long (hidden behind the column or the wedges below): their
+// runs at mid radius read 2.1-2.2 cm long from the inner ends (dev3 r0084, an OS0-128 pitched
+// down 26 deg; dev3 r0119, a level HDL-32). The column's own points, fitted by a circle
+// (SpiralColumn), give its radius: runs within 0.3 cm.
+INSTANTIATE_TEST_SUITE_P(
+    SpiralColumns, MissedBefore,
+    testing::Values(SceneCase{4004, 84, 0.01, 0.01, false, "pitched OS0-128, column fitted"},
+                    SceneCase{4004, 119, 0.01, 0.01, false, "level HDL-32, column fitted"}));
+
 // LiDARs pitched down 27-28 deg see flights 30-40 deg off their pitch axis, 6 m away: the rings
 // cross each riser at a slant, so a riser's hits spread over several 2.5 cm rows, each piece too
 // short for a line. The tilted-ring pass (rows of 5 cm) finds them: an open-sided flight seen
