@@ -35,7 +35,6 @@ std::optional<SpiralColumn> fitSpiralColumn(const PointCloud& cloud, const Eigen
     if (p.sectors < 3 || !(reach > 0.0)) return std::nullopt;
     std::vector<double> nearest(static_cast<std::size_t>(p.sectors), reach);
     std::vector<Eigen::Vector2d> at(static_cast<std::size_t>(p.sectors));
-    std::vector<char> seen(static_cast<std::size_t>(p.sectors), 0);
     for (const Eigen::Vector3f& q : cloud) {
         if (!(q.z() > z_lo && q.z() < z_hi)) continue;  // also drops NaN
         const Eigen::Vector2d d(q.x() - axis.x(), q.y() - axis.y());
@@ -44,14 +43,13 @@ std::optional<SpiralColumn> fitSpiralColumn(const PointCloud& cloud, const Eigen
         const double t = (std::atan2(d.y(), d.x()) + M_PI) / (2.0 * M_PI);
         const auto k = static_cast<std::size_t>(
             std::min(p.sectors - 1, std::max(0, static_cast<int>(t * p.sectors))));
-        if (seen[k] && r >= nearest[k]) continue;
-        seen[k] = 1;
+        if (r >= nearest[k]) continue;  // starts at reach: a sector below it has been seen
         nearest[k] = r;
         at[k] = d;
     }
     std::vector<Eigen::Vector2d> pts;
-    for (std::size_t k = 0; k < seen.size(); ++k)
-        if (seen[k]) pts.push_back(at[k]);
+    for (std::size_t k = 0; k < nearest.size(); ++k)
+        if (nearest[k] < reach) pts.push_back(at[k]);
     if (static_cast<int>(pts.size()) < p.min_sectors) return std::nullopt;
     Eigen::Vector2d centre;
     double radius = 0.0;

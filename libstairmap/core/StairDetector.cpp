@@ -623,8 +623,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
             s.step_depth = turning->run_m;
             if (const auto column = columnOf(cloud_robot, s, *turning);
                 column && column->radius_m < turning->inner_radius_m)  // inner ends read long
-                s.step_depth = (column->radius_m + turning->outer_radius_m) *
-                               std::sin(0.5 * turning->step_angle_rad);
+                s.step_depth = runAtMidRadius(*turning, column->radius_m);
             s.slope_rad = std::atan2(s.step_height, s.step_depth);
         }
     }

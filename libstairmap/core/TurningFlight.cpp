@@ -63,8 +63,12 @@ std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlig
     if (t.step_angle_rad < p.min_step_angle_deg * M_PI / 180.0) return std::nullopt;
     t.inner_radius_m = lowerMedian(inner);  // hidden inner parts only read long
     t.outer_radius_m = quantile(outer, 0.5);
-    t.run_m = (t.inner_radius_m + t.outer_radius_m) * std::sin(0.5 * t.step_angle_rad);
+    t.run_m = runAtMidRadius(t, t.inner_radius_m);
     return t;
+}
+
+double runAtMidRadius(const TurningFlight& t, double inner_radius_m) {
+    return (inner_radius_m + t.outer_radius_m) * std::sin(0.5 * t.step_angle_rad);
 }
 
 }  // namespace stairmap

@@ -41,4 +41,8 @@ struct TurningFlight {
 /// at least min_step_angle_deg per step on average), or nothing for a straight flight.
 std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlightParams& params = {});
 
+/// [m] The chord between consecutive nosings at the mid radius between `inner_radius_m` and t's
+/// outer radius: (inner + outer) x sin(step / 2).
+double runAtMidRadius(const TurningFlight& t, double inner_radius_m);
+
 }  // namespace stairmap

@@ -69,6 +69,17 @@ TEST(TurningFlight, RunOfASpiralWhoseNosingsAreHiddenNearTheColumn) {
     EXPECT_NEAR(t->run_m, sp.run(), 0.01);
 }
 
+TEST(TurningFlight, RunAtMidRadiusIsTheChordBetweenNosingsThere) {
+    TurningFlight t;
+    t.step_angle_rad = 30.0 * kDeg;
+    t.outer_radius_m = 1.1;
+    // Two nosings 30 deg apart, both crossing the circle of radius (0.3 + 1.1) / 2 = 0.7 m: the
+    // distance between their crossings.
+    const Eigen::Vector2d a(0.7, 0.0), b(0.7 * std::cos(30.0 * kDeg), 0.7 * std::sin(30.0 * kDeg));
+    EXPECT_NEAR(runAtMidRadius(t, 0.3), (b - a).norm(), 1e-9);
+    EXPECT_NEAR(runAtMidRadius(t, 1.1), 2.0 * 1.1 * std::sin(15.0 * kDeg), 1e-9);
+}
+
 TEST(TurningFlight, StraightFlightsAndNoisyEdgesHaveNone) {
     Staircase straight;
     for (int k = 0; k < 6; ++k) {
