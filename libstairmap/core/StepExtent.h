@@ -12,9 +12,12 @@
 // A side unseen on the steps is a wall after all when a wall or railing is seen beyond the hole
 // in line on several steps (the tread between hidden: a LiDAR's blind cone close below it, the
 // nearer steps over a descending flight); the steps then reach it.
-// Edges are lengthened to the measured extent (never shortened), then the geometry re-estimated;
-// the flight's width is its widest step when a side is unseen (every step reads short there), else
-// the upper quartile of its steps' widths.
+// Edges are lengthened to the measured extent (never shortened), then the geometry re-estimated.
+// A straight flight's width runs between its two sides, each placed where the steps' ends on it
+// lie in one frame across the flight (different steps may see the two ends): at the outer quartile
+// of the steps' ends when both sides are bounded, at the outermost when a side is unseen (every
+// end reads short there). A turning flight's width comes from its steps' own widths (the widest
+// with a side unseen, else their upper quartile).
 
 #include "core/PointCloud.h"
 #include "core/Staircase.h"

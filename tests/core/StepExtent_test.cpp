@@ -132,6 +132,50 @@ TEST(StepExtent, WithASideUnseenTheFlightIsAsWideAsItsWidestStep) {
     EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
 }
 
+TEST(StepExtent, EachSideIsMeasuredWhereTheStepsSeeItEvenOnDifferentSteps) {
+    // Walls on both sides; every tread is seen on one half only, the left half on even steps and
+    // the right half on odd ones, with a 0.5 m gap in the middle through which the floor 1 m
+    // below shows (each step's inner end reads as an open side): every step reads about half the
+    // width, but together they see both walls.
+    PointCloud cloud;
+    for (int k = 0; k < kSteps; ++k) {
+        const double x_end = k + 1 < kSteps ? nosingX(k + 1) : nosingX(k) + 1.0;
+        const double y_lo = k % 2 == 0 ? 0.25 : -kHalfWidth, y_hi = k % 2 == 0 ? kHalfWidth : -0.25;
+        for (double x = nosingX(k); x < x_end; x += 0.02) {
+            for (double y = y_lo; y <= y_hi + 1e-9; y += 0.02)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(treadZ(k)));
+            for (double y = -0.24; y < 0.24; y += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(treadZ(k) - 1.0));
+            for (double z = treadZ(k); z < treadZ(k) + 1.2; z += 0.04)
+                for (const double y_wall : {kHalfWidth + 0.03, -kHalfWidth - 0.03})
+                    cloud.emplace_back(static_cast<float>(x), static_cast<float>(y_wall),
+                                       static_cast<float>(z));
+        }
+    }
+    Staircase s;
+    for (int k = 0; k < kSteps; ++k) {  // found edges on the seen halves
+        StairEdge e;
+        const double y0 = k % 2 == 0 ? 0.6 : -0.4, y1 = k % 2 == 0 ? 0.4 : -0.6;
+        e.start = {nosingX(k), y0, treadZ(k)};
+        e.end = {nosingX(k), y1, treadZ(k)};
+        e.num_points = 30;
+        s.steps.push_back(e);
+    }
+    estimateGeometry(s);
+    measureStepExtents(cloud, s);
+    // Both sides bounded (by the majority of steps: a wall on the left, the gap's drop on the
+    // right).
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+    for (int k = 0; k + 1 < kSteps; ++k)  // the landing's edge is not measured
+        EXPECT_LT(s.steps[k].length(), kHalfWidth) << "step " << k;
+    // As in the first test, the bins holding the walls' feet (3 cm out) count as tread. The steps'
+    // own widths (their upper quartile, the rule before) read 0.58 m here.
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
+}
+
 /// Points along each nosing line, 2 cm in front of it at the tread's height, from y_lo to y_hi.
 void addNosingHits(PointCloud& c, double y_lo, double y_hi) {
     for (int k = 0; k + 1 < kSteps; ++k)
