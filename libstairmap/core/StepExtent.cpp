@@ -356,12 +356,14 @@ bool alignStraightFlight(std::vector<TreadScan>& scans, double max_dev_rad) {
 /// bounded side's quartile with the other side unseen 6.27 / 7.52 / 6.75.) Each side's end is taken
 /// where most of the steps put it: with both sides bounded, at its outer quartile over the steps (a
 /// shorter end lost part of its tread, a longer one ran onto a surface at tread height beside the
-/// flight); with a side unseen, at the outermost on each side (every end reads at most its true one
-/// there). Across = the edges' mean direction weighted by their points: the steps' ends agree along
-/// the flight in a frame that is not tilted by the fits of short edges (bundled `descending_2`: the
-/// unweighted mean put the ends of two steps 2 m apart 9.5 cm apart; bundled width MAE 2.39 -> 2.22
-/// cm, dev sets within 0.02 cm).
-double widthAcrossSides(const std::vector<TreadScan>& scans, const Staircase& stairs) {
+/// flight), or at the outermost where the ends scatter (side_spread_m); with a side unseen, at the
+/// outermost on each side (every end reads at most its true one there). Across = the edges' mean
+/// direction weighted by their points: the steps' ends agree along the flight in a frame that is
+/// not tilted by the fits of short edges (bundled `descending_2`: the unweighted mean put the ends
+/// of two steps 2 m apart 9.5 cm apart; bundled width MAE 2.39 -> 2.22 cm, dev sets within 0.02
+/// cm).
+double widthAcrossSides(const std::vector<TreadScan>& scans, const Staircase& stairs,
+                        const StepExtentParams& p) {
     double c2 = 0.0, s2 = 0.0;
     for (const TreadScan& t : scans) {
         const double w = std::max(1, stairs.steps[t.step].num_points);
@@ -382,8 +384,13 @@ double widthAcrossSides(const std::vector<TreadScan>& scans, const Staircase& st
     std::sort(hi.begin(), hi.end());
     const bool unseen =
         stairs.left_side == StairSide::Unseen || stairs.right_side == StairSide::Unseen;
-    const std::size_t q = unseen ? 0 : lo.size() / 4;
-    return hi[hi.size() - 1 - q] - lo[q];
+    // A bounded side whose ends scatter (the outer quartile beyond the median by more than
+    // side_spread_m): most steps stopped short of it, at gaps the view left in their treads.
+    const std::size_t q = unseen ? 0 : lo.size() / 4, m = lo.size() / 2;
+    const std::size_t q_lo = lo[m] - lo[q] > p.side_spread_m ? 0 : q;
+    const std::size_t q_hi =
+        hi[hi.size() - 1 - q] - hi[hi.size() - 1 - m] > p.side_spread_m ? 0 : q;
+    return hi[hi.size() - 1 - q_hi] - lo[q_lo];
 }
 
 }  // namespace
@@ -434,7 +441,7 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
     for (const TreadScan& t : scans) widths.push_back(stairs.steps[t.step].length());
     if (widths.size() < 2) return;
     // A turning flight's sides share no frame: its steps' own widths.
-    stairs.step_width = straight ? widthAcrossSides(scans, stairs) : flightWidth(widths, stairs);
+    stairs.step_width = straight ? widthAcrossSides(scans, stairs, p) : flightWidth(widths, stairs);
 }
 
 }  // namespace stairmap

@@ -176,6 +176,34 @@ TEST(StepExtent, EachSideIsMeasuredWhereTheStepsSeeItEvenOnDifferentSteps) {
     EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.08);
 }
 
+TEST(StepExtent, ASideWhoseEndsScatterIsWhereTheOutermostStepReachesIt) {
+    // Open on both sides (the floor 1 m below seen beyond every end). On the right every tread is
+    // seen to its end; on the left only step 0 is, the others stop short at scattered points
+    // (gaps in far rows: nothing of them beyond, only the floor far below).
+    const double left_seen_to[kSteps] = {kHalfWidth, 0.4, 0.25, 0.6, 0.2, 0.2};
+    PointCloud cloud;
+    for (int k = 0; k < kSteps; ++k) {
+        const double x_end = k + 1 < kSteps ? nosingX(k + 1) : nosingX(k) + 1.0;
+        for (double x = nosingX(k); x < x_end; x += 0.02) {
+            for (double y = -kHalfWidth; y <= left_seen_to[k] + 1e-9; y += 0.02)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(treadZ(k)));
+            for (const double side : {-1.0, 1.0})  // the floor below, 0.1-0.3 m beyond the ends
+                for (double d = 0.1; d < 0.3; d += 0.04) {
+                    const double y = side > 0 ? left_seen_to[k] + d : -kHalfWidth - d;
+                    cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                       static_cast<float>(treadZ(k) - 1.0));
+                }
+        }
+    }
+    Staircase s = pieces();
+    measureStepExtents(cloud, s);
+    EXPECT_EQ(s.left_side, StairSide::Open);
+    EXPECT_EQ(s.right_side, StairSide::Open);
+    // The outer quartile of the left ends (0.6 m) read 1.42 m.
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.04);
+}
+
 /// Points along each nosing line, 2 cm in front of it at the tread's height, from y_lo to y_hi.
 void addNosingHits(PointCloud& c, double y_lo, double y_hi) {
     for (int k = 0; k + 1 < kSteps; ++k)
