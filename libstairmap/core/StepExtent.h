@@ -15,9 +15,9 @@
 // Edges are lengthened to the measured extent (never shortened), then the geometry re-estimated.
 // A straight flight's width runs between its two sides, each placed where the steps' ends on it
 // lie in one frame across the flight (different steps may see the two ends): at the outer quartile
-// of the steps' ends when both sides are bounded, at the outermost when a side is unseen (every
-// end reads short there). A turning flight's width comes from its steps' own widths (the widest
-// with a side unseen, else their upper quartile).
+// of the steps' ends when both sides are bounded (at the outermost where they scatter), at the
+// outermost when a side is unseen (every end reads short there). A turning flight's width comes
+// from its steps' own widths (the widest with a side unseen, else their upper quartile).
 
 #include "core/PointCloud.h"
 #include "core/Staircase.h"
@@ -64,12 +64,13 @@ struct StepExtentParams {
     /// (Development sets, width MAE: 6.30 / 8.04 / 6.87 -> 6.31 / 7.78 / 6.40 cm; 5 deg: 6.37 /
     /// 7.80 / 6.64; 12: 6.29 / 7.96 / 6.40.) 0 scans each along its own edge.
     double common_direction_max_deg = 8.0;
-    /// [m] A straight flight's side bounded on both sides is placed at the outer quartile of its
-    /// steps' ends, or at the outermost end when that quartile lies more than this beyond their
-    /// median: the ends scatter where most steps stop short of the side at gaps in their treads
-    /// (far rows, open risers seen through; dev r0049: 1.60 m read for 1.94 m). Width MAE
+    /// [m] With both sides bounded, each side of a straight flight is placed at the outer quartile
+    /// of its steps' ends, or at the outermost end when that quartile lies more than this beyond
+    /// their median: the ends scatter where most steps stop short of the side at gaps in their
+    /// treads (far rows, open risers seen through; dev r0049: 1.60 m read for 1.94 m). Width MAE
     /// dev / dev2 / dev3 6.22 / 7.53 / 6.78 -> 5.94 / 7.43 / 6.63 cm; 0.05 m: 5.97 / 7.32 / 6.73;
-    /// 0.20 m: 6.19 / 7.45 / 6.64; the second outermost end instead: 7.59 / 9.71 / 8.19.
+    /// 0.20 m: 6.19 / 7.45 / 6.64; the second outermost end instead (in that run also on the
+    /// unseen sides whose ends scatter): 7.59 / 9.71 / 8.19.
     double side_spread_m = 0.10;
 };
 
