@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 namespace stairmap {
@@ -67,6 +68,25 @@ TEST(TurningFlight, RunOfASpiralWhoseNosingsAreHiddenNearTheColumn) {
     ASSERT_TRUE(t.has_value());
     EXPECT_NEAR(t->inner_radius_m, sp.inner, 0.025);  // the nearest seen from 1-2 cm off it
     EXPECT_NEAR(t->run_m, sp.run(), 0.01);
+}
+
+// One level's line off its nosing's angle (a short line at the column, dev r0230's top level
+// 11 deg off): the step angle is the median of the pairwise angle steps, which that level moves
+// in 5 of 15 pairs only. A least-squares slope over the levels read 22.1 deg for 20 here.
+TEST(TurningFlight, OneLevelOffItsAngleDoesNotTurnTheStep) {
+    for (double sign : {1.0, -1.0}) {
+        Spiral sp;
+        sp.step = sign * 20.0 * kDeg;
+        Staircase s;
+        for (int k = 0; k < 6; ++k) s.steps.push_back(nosing(sp, k, sp.inner, sp.outer));
+        const Eigen::Rotation2Dd off(sign * 15.0 * kDeg);  // the top level turned on about the axis
+        for (Eigen::Vector3d* end : {&s.steps.back().start, &s.steps.back().end})
+            end->head<2>() = sp.axis + off * (end->head<2>() - sp.axis);
+        const auto t = turningFlight(s);
+        ASSERT_TRUE(t.has_value());
+        EXPECT_NEAR(t->step_angle_rad, 20.0 * kDeg, 0.5 * kDeg) << sign;
+        EXPECT_NEAR(t->run_m, sp.run(), 0.005) << sign;
+    }
 }
 
 TEST(TurningFlight, RunAtMidRadiusIsTheChordBetweenNosingsThere) {
