@@ -437,11 +437,15 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
     estimateGeometry(stairs);
     if (boundSidesAcrossHoles(scans, ext, p, stairs))
         stairs.location = stairs.steps.front().centre();
+    if (scans.size() < 2) return;
+    if (straight) {
+        stairs.step_width = widthAcrossSides(scans, stairs, p);
+        return;
+    }
+    // A turning flight's sides share no frame: its steps' own widths.
     std::vector<double> widths;
     for (const TreadScan& t : scans) widths.push_back(stairs.steps[t.step].length());
-    if (widths.size() < 2) return;
-    // A turning flight's sides share no frame: its steps' own widths.
-    stairs.step_width = straight ? widthAcrossSides(scans, stairs, p) : flightWidth(widths, stairs);
+    stairs.step_width = flightWidth(widths, stairs);
 }
 
 }  // namespace stairmap
