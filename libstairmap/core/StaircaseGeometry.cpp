@@ -8,6 +8,9 @@
 namespace stairmap {
 namespace {
 
+/// [-] fewest pairs of seen edges for the median run (three seen edges); fewer: least squares
+constexpr std::size_t kMinRunPairs = 3;
+
 /// Distance from an XY point to the infinite XY line through an edge.
 double pointToLineXY(const Eigen::Vector2d& p, const StairEdge& e) {
     const Eigen::Vector2d a = e.start.head<2>();
@@ -99,6 +102,26 @@ double slopeAgainstIndex(const std::vector<double>& values) {
     return num / den;
 }
 
+double medianPairwiseSlope(const std::vector<double>& values, const std::vector<char>& seen,
+                           std::size_t min_pairs) {
+    std::vector<double> slopes;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        for (std::size_t j = i + 1; j < values.size(); ++j)
+            if (seen[i] && seen[j])
+                slopes.push_back((values[j] - values[i]) / static_cast<double>(j - i));
+    if (slopes.empty() || slopes.size() < min_pairs) return slopeAgainstIndex(values);
+    const auto mid = slopes.begin() + static_cast<std::ptrdiff_t>(slopes.size() / 2);
+    std::nth_element(slopes.begin(), mid, slopes.end());
+    return *mid;
+}
+
+std::vector<char> seenEdges(const std::vector<StairEdge>& steps) {
+    std::vector<char> seen;
+    seen.reserve(steps.size());
+    for (const StairEdge& e : steps) seen.push_back(e.num_points > 0);
+    return seen;
+}
+
 std::pair<double, double> lateralExtent(const Staircase& s, const Eigen::Vector2d& lateral) {
     std::pair<double, double> ext{std::numeric_limits<double>::infinity(),
                                   -std::numeric_limits<double>::infinity()};
@@ -141,7 +164,11 @@ void estimateGeometry(Staircase& stairs) {
         cumulative.push_back(run_sum);
     }
     stairs.step_height = std::abs(slopeAgainstIndex(heights));
-    stairs.step_depth = slopeAgainstIndex(cumulative);
+    // The run over the seen edges' pairs (put-back edges are interpolated): one edge misplaced (a
+    // far view's last, short edge; a depth camera's noisy one) tilts the least-squares slope of
+    // the cumulative spacing (dev2 r0199: 4.4 cm short). Run MAE dev / dev2 / dev3 0.395 / 0.543 /
+    // 0.506 -> 0.351 / 0.506 / 0.436 cm; all edges' pairs 0.350 / 0.505 / 0.456.
+    stairs.step_depth = medianPairwiseSlope(cumulative, seenEdges(steps), kMinRunPairs);
     stairs.step_width = robustWidth(steps);
     stairs.slope_rad = std::atan2(stairs.step_height, stairs.step_depth);
     // Only descending flights: there the floor's edge hides the ends of the first lower nosings when

@@ -16,12 +16,13 @@ namespace stairmap {
 /// are in, as long as z is up. Rules:
 ///  - heading: normal of the length-weighted mean edge orientation, pointing from steps.front()
 ///    towards steps.back() (one edge: the side of the previous heading_rad);
-///  - step_height: |slope| of edge height vs. index; step_depth: slope of the cumulative spacing,
-///    where the spacing of two edges is their mutual perpendicular XY distance (works for turning
-///    spiral steps too);
+///  - step_height: |slope| of edge height vs. index; step_depth: median pairwise slope of the
+///    cumulative spacing over the seen edges (medianPairwiseSlope; least squares over all with
+///    fewer than three seen), where the spacing of two edges is their mutual perpendicular XY
+///    distance (works for turning spiral steps too);
 ///  - step_width: median of the longer half of the edge lengths (robust to partially seen edges);
 ///  - location: centre of steps.front(); slope_rad = atan2(step_height, step_depth).
-/// An empty staircase gets all-zero geometry. Cost O(k log k) for k steps.
+/// An empty staircase gets all-zero geometry. Cost O(k^2) for k steps (the run's pairs).
 void estimateGeometry(Staircase& stairs);
 
 /// Perpendicular XY distance between two edges: mean of the distance of each centre to the other
@@ -36,6 +37,16 @@ std::pair<double, double> lateralExtent(const Staircase& s, const Eigen::Vector2
 
 /// Least-squares slope of values[i] against the index i (0 for fewer than two values).
 double slopeAgainstIndex(const std::vector<double>& values);
+
+/// Theil-Sen slope of values[i] against the index i: the median (of an even count the upper
+/// middle one) of (values[j] - values[i]) / (j - i) over the pairs i < j with both `seen`. One
+/// value off moves it in few pairs, where it tilts a least-squares slope. slopeAgainstIndex over
+/// all values when fewer than `min_pairs` pairs are seen. `seen` has one flag per value.
+double medianPairwiseSlope(const std::vector<double>& values, const std::vector<char>& seen,
+                           std::size_t min_pairs);
+
+/// Per edge of `steps`: whether the edge was seen (num_points > 0), not put back between seen ones.
+std::vector<char> seenEdges(const std::vector<StairEdge>& steps);
 
 /// Height [m] (frame of the staircase) of the surface the flight starts from, as the robot meets
 /// it: ascending, the surface one rise under the first nosing (the floor, or a landing or platform

@@ -24,21 +24,6 @@ double lowerMedian(std::vector<double> v) {
     return v[static_cast<std::size_t>(k)];
 }
 
-/// [rad] Turn per step: the median of the angle differences per index step over all pairs of
-/// seen edges (Theil-Sen; `seen[i]` false for an edge put back between seen ones, whose angle is
-/// interpolated). A level whose line is its tread's back edge lies one step angle ahead of its
-/// nosing and pulls a least-squares slope over every edge (dev r0230: 29 deg read for 24).
-/// Falls back to the least-squares slope over all edges with fewer than two seen.
-double stepAngleOfSeenEdges(const std::vector<double>& phi, const std::vector<char>& seen) {
-    std::vector<double> slopes;
-    for (std::size_t i = 0; i < phi.size(); ++i)
-        for (std::size_t j = i + 1; j < phi.size(); ++j)
-            if (seen[i] && seen[j])
-                slopes.push_back((phi[j] - phi[i]) / static_cast<double>(j - i));
-    if (slopes.empty()) return std::abs(slopeAgainstIndex(phi));
-    return std::abs(quantile(std::move(slopes), 0.5));
-}
-
 }  // namespace
 
 std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlightParams& p) {
@@ -59,7 +44,6 @@ std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlig
     t.axis = a.ldlt().solve(b);
     // Angles of the edges around it (towards their outer ends), unwrapped step by step.
     std::vector<double> phi, inner, outer;
-    std::vector<char> seen;
     int radial = 0;
     for (const StairEdge& e : s.steps) {
         const Eigen::Vector2d p0 = e.start.head<2>() - t.axis, p1 = e.end.head<2>() - t.axis;
@@ -69,14 +53,16 @@ std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlig
         double angle = std::atan2(far.y(), far.x());
         if (!phi.empty()) angle = phi.back() + std::remainder(angle - phi.back(), 2.0 * M_PI);
         phi.push_back(angle);
-        seen.push_back(e.num_points > 0);
         if (e.num_points > 0) {  // seen; put-back edges are interpolated
             inner.push_back(std::min(p0.norm(), p1.norm()));
             outer.push_back(std::max(p0.norm(), p1.norm()));
         }
     }
     if (2 * radial <= static_cast<int>(n) || inner.empty()) return std::nullopt;
-    t.step_angle_rad = stepAngleOfSeenEdges(phi, seen);
+    // Theil-Sen over the seen edges: a level whose line lies off its nosing's angle (a short line
+    // at the column, a back edge one step ahead) turns a least-squares slope (dev r0230: 29 deg
+    // read for 24); put-back edges only repeat the helix they were interpolated on.
+    t.step_angle_rad = std::abs(medianPairwiseSlope(phi, seenEdges(s.steps), 1));
     if (t.step_angle_rad < p.min_step_angle_deg * M_PI / 180.0) return std::nullopt;
     t.inner_radius_m = lowerMedian(inner);  // hidden inner parts only read long
     t.outer_radius_m = quantile(outer, 0.5);

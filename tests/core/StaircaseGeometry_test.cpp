@@ -53,6 +53,32 @@ TEST(StaircaseGeometry, MeanUsesEveryStepNotTwoKDivision) {
     EXPECT_NEAR(s.step_height, 0.2, 1e-9);
 }
 
+// A far view's last edge read 8 cm short of its nosing (a short, misplaced line), and a put-back
+// edge between seen ones placed off its nosing: the run is the median over the seen edges' pairs.
+// The least-squares slope of the cumulative spacing read 0.2886 m here.
+TEST(StaircaseGeometry, OneMisplacedEdgeDoesNotTiltTheRun) {
+    const double yaw = 0.4;
+    const Eigen::Vector3d back(-std::cos(yaw), -std::sin(yaw), 0.0);
+    Staircase s = knownFlight(6, 0.17, 0.30, 1.2, yaw, {2.0, 0.0, -0.3});
+    s.steps[5].start += 0.08 * back;
+    s.steps[5].end += 0.08 * back;
+    estimateGeometry(s);
+    EXPECT_NEAR(s.step_depth, 0.30, 1e-3);
+    Staircase put_back = knownFlight(6, 0.17, 0.30, 1.2, yaw, {2.0, 0.0, -0.3});
+    put_back.steps[2].num_points = 0;  // interpolated, not measured
+    put_back.steps[2].start += 0.10 * back;
+    put_back.steps[2].end += 0.10 * back;
+    estimateGeometry(put_back);
+    EXPECT_NEAR(put_back.step_depth, 0.30, 1e-9);
+}
+
+TEST(StaircaseGeometry, MedianPairwiseSlopeFallsBackToLeastSquaresWithFewPairs) {
+    const std::vector<double> v{0.0, 1.0, 2.0, 9.0};
+    EXPECT_NEAR(medianPairwiseSlope(v, {1, 1, 1, 1}, 3), 3.0, 1e-12);  // 1 1 1 3 4 7: upper middle
+    EXPECT_NEAR(medianPairwiseSlope(v, {1, 0, 0, 1}, 3), slopeAgainstIndex(v), 1e-12);  // one pair
+    EXPECT_NEAR(medianPairwiseSlope(v, {1, 1, 1, 0}, 3), 1.0, 1e-12);
+}
+
 TEST(StaircaseGeometry, WidthIsRobustToPartiallySeenEdges) {
     Staircase s = knownFlight(6, 0.17, 0.28, 1.2, 0.0, {2, 0, 0});
     s.steps[0].end = s.steps[0].centre();  // first edge half seen
