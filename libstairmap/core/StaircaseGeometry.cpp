@@ -165,9 +165,10 @@ void estimateGeometry(Staircase& stairs) {
     }
     stairs.step_height = std::abs(slopeAgainstIndex(heights));
     // The run over the seen edges' pairs (put-back edges are interpolated): one edge misplaced (a
-    // far view's last, short edge; a depth camera's noisy one) tilts the least-squares slope of
-    // the cumulative spacing (dev2 r0199: 4.4 cm short). Run MAE dev / dev2 / dev3 0.395 / 0.543 /
-    // 0.506 -> 0.351 / 0.506 / 0.436 cm; all edges' pairs 0.350 / 0.505 / 0.456.
+    // view's last, short edge at a crop, 43 deg off the others: dev3 r0076, 4.2 cm short; a depth
+    // camera's noisy one) tilts the least-squares slope of the cumulative spacing. Run MAE dev /
+    // dev2 / dev3 0.395 / 0.543 / 0.506 -> 0.351 / 0.506 / 0.436 cm; all edges' pairs 0.350 /
+    // 0.505 / 0.456.
     stairs.step_depth = medianPairwiseSlope(cumulative, seenEdges(steps), kMinRunPairs);
     stairs.step_width = robustWidth(steps);
     stairs.slope_rad = std::atan2(stairs.step_height, stairs.step_depth);
