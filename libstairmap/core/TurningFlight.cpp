@@ -59,9 +59,10 @@ std::optional<TurningFlight> turningFlight(const Staircase& s, const TurningFlig
         }
     }
     if (2 * radial <= static_cast<int>(n) || inner.empty()) return std::nullopt;
-    // Theil-Sen over the seen edges: a level whose line lies off its nosing's angle (a short line
-    // at the column, a back edge one step ahead) turns a least-squares slope (dev r0230: 29 deg
-    // read for 24); put-back edges only repeat the helix they were interpolated on.
+    // Theil-Sen over the seen edges: a level whose line lies off its nosing's angle (a back edge
+    // one step ahead, a short line at the column) turns a least-squares slope (dev r0144, its top
+    // level of four a back edge: 23.1 deg read for 17.5, now 19.4); put-back edges only repeat the
+    // helix they were interpolated on.
     t.step_angle_rad = std::abs(medianPairwiseSlope(phi, seenEdges(s.steps), 1));
     if (t.step_angle_rad < p.min_step_angle_deg * M_PI / 180.0) return std::nullopt;
     t.inner_radius_m = lowerMedian(inner);  // hidden inner parts only read long

@@ -70,9 +70,9 @@ TEST(TurningFlight, RunOfASpiralWhoseNosingsAreHiddenNearTheColumn) {
     EXPECT_NEAR(t->run_m, sp.run(), 0.01);
 }
 
-// One level's line off its nosing's angle (a short line at the column, dev r0230's top level
-// 11 deg off): the step angle is the median of the pairwise angle steps, which that level moves
-// in 5 of 15 pairs only. A least-squares slope over the levels read 22.1 deg for 20 here.
+// One level's line off its nosing's angle (a back edge one step ahead, a short line at the
+// column): the step angle is the median of the pairwise angle steps, which that level moves in 5
+// of 15 pairs only. A least-squares slope over the levels read 22.1 deg for 20 here.
 TEST(TurningFlight, OneLevelOffItsAngleDoesNotTurnTheStep) {
     for (double sign : {1.0, -1.0}) {
         Spiral sp;
