@@ -93,6 +93,11 @@ struct DetectorParams {
     double min_deep_tread_m = 0.40;
     /// [deg] condition 3's minimum slope for such chains (0.19 m rises on 0.64 m treads: 16.5 deg)
     double min_level_tread_slope_deg = 15.0;
+    /// Ring-aliased flights seen in part: a chain of three edges (one short of min_steps) that no
+    /// cue above continues counts when lines lie every other step beyond its last edge
+    /// (FlightContinuation.h, linesEveryOtherStepBeyond); they join it with the nosings between
+    /// put back. A far level LiDAR sees three nosings and then every other one (dev2 r0133).
+    bool continue_every_other_step = true;
     /// [m] ring-aliased flights: a far LiDAR may see every other nosing only (each pair two
     /// steps apart, runs beyond condition 2's bound). An ascending chain of such pairs, its rises
     /// in [2 min_step_height_m, this] and runs in [2 min_step_depth_m, 2 max_step_depth_m], whose

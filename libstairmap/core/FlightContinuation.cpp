@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/LineFusion.h"
 #include "core/MissingNosings.h"
 
 namespace stairmap {
@@ -163,6 +164,55 @@ bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegm
                                      -(p.to_runs - 1.0) * step.run, -(p.from_runs - 1.0) * step.run,
                                      landing_z, floor_z, p);
     return showsTread(w, half, p);
+}
+
+namespace {
+
+/// The line of `lines` two steps (of `step`) beyond `from`, the nearest to two runs; -1 if none.
+int lineTwoStepsBeyond(const std::vector<LineSegment>& lines, const LineSegment& from,
+                       const ChainStep& step, const FlightContinuationParams& p) {
+    const Eigen::Vector2d d = from.direction();
+    const double cos_turn = std::cos(p.max_turn_deg * M_PI / 180.0);
+    const auto [lo, hi] = extentAlong(from, d);
+    int best = -1;
+    double best_off = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const LineSegment& l = lines[k];
+        const double dz = l.z - from.z;
+        if (dz < p.beyond_min_rises * step.rise || dz > p.beyond_max_rises * step.rise) continue;
+        const double behind = step.up.dot(l.centre() - from.centre());
+        if (behind < p.beyond_from_runs * step.run || behind > p.beyond_to_runs * step.run)
+            continue;
+        if (std::abs(l.direction().dot(d)) < cos_turn) continue;
+        const auto [l_lo, l_hi] = extentAlong(l, d);
+        const double overlap = std::min(hi, l_hi) - std::max(lo, l_lo);
+        if (overlap < p.beyond_min_overlap * std::min(from.length(), l.length())) continue;
+        const double off = std::abs(behind - 2.0 * step.run);
+        if (off < best_off) {
+            best_off = off;
+            best = static_cast<int>(k);
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+std::vector<int> linesEveryOtherStepBeyond(const std::vector<LineSegment>& lines,
+                                           const std::vector<LineSegment>& edges,
+                                           const FlightContinuationParams& p) {
+    std::vector<int> out;
+    if (edges.size() < 3 || !isRegularStraightChain(edges, p)) return out;  // two pairs at least
+    const ChainStep step = chainStep(edges);
+    const LineSegment* from = &edges.back();
+    // Each step goes at least beyond_min_rises rises up: no line is taken twice.
+    for (;;) {
+        const int k = lineTwoStepsBeyond(lines, *from, step, p);
+        if (k < 0) break;
+        out.push_back(k);
+        from = &lines[k];
+    }
+    return out;
 }
 
 LineSegment nextNosing(const std::vector<LineSegment>& edges) {

@@ -38,6 +38,15 @@ struct FlightContinuationParams {
     /// step (condition 1's 0.11 m) less the tread tolerance; the real ANYmal entrance's landing is
     /// 0.10 m above the level in front of it
     double min_landing_height_m = 0.08;
+    /// A line two steps beyond the last edge (lineTwoStepsBeyond): this many runs behind it ...
+    double beyond_from_runs = 1.8;
+    double beyond_to_runs = 2.2;
+    /// [-] ... this many chain rises above it (a far level LiDAR's riser hits read up to a rise
+    /// low, so the line two nosings up reads 1-2 rises above a last edge itself read low or not)
+    double beyond_min_rises = 0.9;
+    double beyond_max_rises = 2.5;
+    /// [0..1] ... overlapping the last edge over this fraction of the shorter one
+    double beyond_min_overlap = 0.5;
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
@@ -82,6 +91,19 @@ bool unseenBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment
 /// descending flight would be seen.
 bool nothingBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                            const FlightContinuationParams& params = {});
+
+/// The indices of the lines (of `lines`, real z) two, four, ... steps beyond the last edge of
+/// `edges` (as above, at least three edges: a regular straight flight), each two runs behind the
+/// one before (beyond_from_runs..beyond_to_runs of the chain's run), higher by
+/// beyond_min_rises..beyond_max_rises of its rise, parallel within max_turn_deg and overlapping
+/// it; empty when the chain is shorter or not regular, or no line lies two steps beyond its last
+/// edge. A far level LiDAR's rings alias with the steps: it sees three nosings of a long flight
+/// and then every other one (dev2 r0133, a VLP-16 at 6 m), whose lines Algorithm 1 cannot join:
+/// their heights, read on the risers, are off the two rises it asks for by up to a rise. A
+/// two-step stage shows no edge two steps behind its platform's.
+std::vector<int> linesEveryOtherStepBeyond(const std::vector<LineSegment>& lines,
+                                           const std::vector<LineSegment>& edges,
+                                           const FlightContinuationParams& params = {});
 
 /// The nosing one rise above and one run behind the last edge (unseen, num_points 0), as wide as it.
 LineSegment nextNosing(const std::vector<LineSegment>& edges);

@@ -60,15 +60,6 @@ double oneStepRiseOfAliasedChain(const std::vector<double>& rises, const std::ve
     return unit_rise;
 }
 
-/// The edge halfway between a and b, its end points paired by their position along a.
-LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b) {
-    const Eigen::Vector2d u = a.direction();
-    const bool same_order = u.dot(b.end - b.start) >= 0;
-    const Eigen::Vector2d b_start = same_order ? b.start : b.end;
-    const Eigen::Vector2d b_end = same_order ? b.end : b.start;
-    return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
-}
-
 /// Whether one of `lines` lies where the nosing halfway between edges a and b would (within a
 /// quarter of their spacing of its line and of their rise of its height, beside its extent): then
 /// the pair is not two steps with the middle nosing unseen, whatever kept the search off it.
@@ -101,6 +92,14 @@ LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& en
     m.cov << kUnseenRhoVar, 0.0, 0.0, kUnseenThetaVar;
     m.num_points = 0;
     return m;
+}
+
+LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b) {
+    const Eigen::Vector2d u = a.direction();
+    const bool same_order = u.dot(b.end - b.start) >= 0;
+    const Eigen::Vector2d b_start = same_order ? b.start : b.end;
+    const Eigen::Vector2d b_end = same_order ? b.end : b.start;
+    return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
 }
 
 int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m) {

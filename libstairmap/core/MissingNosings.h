@@ -14,6 +14,10 @@ namespace stairmap {
 /// num_points = 0 and a wide (rho, theta) covariance (5 cm, 0.1 rad), so fusion weighs it little.
 LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double z);
 
+/// The unseen nosing halfway (XY and z) between edges a and b, its end points paired by their
+/// position along a.
+LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b);
+
 /// Inserts an edge halfway (XY and z) between consecutive edges of a flight that are about two
 /// rises apart (1.6-2.4x the median rise of the flight). Inserted edges have num_points = 0 (not
 /// seen) and a wide (rho, theta) covariance. `edges` are ordered from the floor outward, z real

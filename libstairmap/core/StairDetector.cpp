@@ -373,10 +373,33 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     const auto continued = [&](std::vector<LineSegment>& edges) {
         return continueShortChain(cloud, floor_z, p, edges);
     };
+    // Only where no chain continues so: then the lines every other step beyond a chain of three
+    // (FlightContinuation.h) continue it, each with the nosing halfway before it put back. Off the
+    // flights found: there such a chain is a piece of one of them.
+    std::vector<int> beyond;
+    const auto continuedEveryOtherStep = [&](std::vector<LineSegment>& edges) {
+        const auto onFound = [&](const LineSegment& e) {
+            return onAnyFlightFootprint(e.centre(), out);
+        };
+        if (std::any_of(edges.begin(), edges.end(), onFound)) return false;
+        beyond = linesEveryOtherStepBeyond(lines, edges, continuationParams(p));
+        if (beyond.empty()) return false;
+        for (int k : beyond) {
+            edges.push_back(halfwayNosing(edges.back(), lines[k]));
+            edges.push_back(lines[k]);
+        }
+        correct(edges);  // the new lines are riser hits as often as the chain's were
+        return true;
+    };
     if (up) {
-        if (const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, continued)) {
-            if (!used.empty())  // kept only for the searches below and the debug record
+        const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, continued);
+        if (!taken && p.continue_every_other_step)
+            taken = continueRefused(lines, refused, refused_ties, continuedEveryOtherStep);
+        if (taken) {
+            if (!used.empty()) {  // kept only for the searches below and the debug record
                 for (int idx : *taken) used[idx] = 1;
+                for (int idx : beyond) used[idx] = 1;
+            }
             refused.clear();  // not a refusal after all
         }
     }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
 #include <vector>
 
 #include "support/HandMadeNosing.h"
@@ -157,6 +159,63 @@ TEST(FlightContinuation, NothingAtAnyHeightBeyondTheLastEdgeIsTheEndOfTheView) {
     // Not for an irregular chain.
     EXPECT_FALSE(nothingBeyondLastEdge(threeTreads(),
                                        {step(1), step(2), nosing(1.0 + 3.0 * kRun, 3 * kRise)}));
+}
+
+/// The nosing of step k read `low` metres below its height (a riser hit), as a far LiDAR's ring
+/// gives it.
+LineSegment riserHit(int k, double low) { return nosing(1.0 + (k - 1) * kRun, k * kRise - low); }
+
+TEST(FlightContinuation, LinesEveryOtherStepBeyondAChainOfThreeAreFoundInOrder) {
+    // Steps 5, 7 and 9 seen, read low by 2-16 cm on their risers (their heights 1.1-2.5 rises
+    // apart, where Algorithm 1 asks two rises within 4 cm), steps 4, 6 and 8 not at all.
+    const std::vector<LineSegment> lines = {riserHit(7, 0.02), riserHit(5, 0.10), riserHit(9, 0.16),
+                                            step(1),           step(2),           step(3)};
+    const std::vector<int> beyond = linesEveryOtherStepBeyond(lines, {step(1), step(2), step(3)});
+    EXPECT_EQ(beyond, (std::vector<int>{1, 0, 2}));
+}
+
+TEST(FlightContinuation, NoLinesBeyondAStagesPlatformEdge) {
+    // A two-step stage: its platform's edge is the chain's last; behind it lie a line at the
+    // platform's own height two runs back (a mat's edge) and a shelf's front edge 0.8 m up.
+    const std::vector<LineSegment> lines = {nosing(1.0 + 4 * kRun, 3 * kRise + 0.01),
+                                            nosing(1.0 + 4 * kRun, 3 * kRise + 0.8)};
+    EXPECT_TRUE(linesEveryOtherStepBeyond(lines, {step(1), step(2), step(3)}).empty());
+}
+
+TEST(FlightContinuation, ALineTwoStepsBeyondMustBeParallelTwoRunsBackAndBesideTheLastEdge) {
+    const std::vector<LineSegment> chain = {step(1), step(2), step(3)};
+    // One run back (the next nosing: Algorithm 1's own case) or three runs back: not two steps.
+    EXPECT_TRUE(linesEveryOtherStepBeyond({riserHit(4, 0.0)}, chain).empty());
+    EXPECT_TRUE(linesEveryOtherStepBeyond({nosing(1.0 + 5 * kRun, 5 * kRise)}, chain).empty());
+    // Turned by 20 deg about its centre.
+    LineSegment turned = step(5);
+    const Eigen::Rotation2Dd r(20.0 * M_PI / 180.0);
+    const Eigen::Vector2d c = turned.centre();
+    turned.start = c + r * (turned.start - c);
+    turned.end = c + r * (turned.end - c);
+    turned.theta = r.angle();  // the normal turns with it (theta 0: along +x)
+    turned.rho = c.x() * std::cos(turned.theta) + c.y() * std::sin(turned.theta);
+    EXPECT_TRUE(linesEveryOtherStepBeyond({turned}, chain).empty());
+    // Beside the flight: shifted 1.1 m along the edge (overlapping 0.1 of its 1.2 m).
+    LineSegment beside = step(5);
+    beside.start.y() += 1.1;
+    beside.end.y() += 1.1;
+    EXPECT_TRUE(linesEveryOtherStepBeyond({beside}, chain).empty());
+    // The same line where it belongs is taken.
+    EXPECT_EQ(linesEveryOtherStepBeyond({step(5)}, chain), (std::vector<int>{0}));
+}
+
+TEST(FlightContinuation, AChainOfTwoEdgesGetsNoLinesBeyond) {
+    // One pair is no regular flight to measure two steps by (the mapping presets' min_steps 3).
+    EXPECT_TRUE(linesEveryOtherStepBeyond({step(4)}, {step(1), step(2)}).empty());
+    EXPECT_EQ(linesEveryOtherStepBeyond({step(5)}, {step(1), step(2), step(3)}),
+              (std::vector<int>{0}));
+}
+
+TEST(FlightContinuation, AnIrregularChainGetsNoLinesBeyond) {
+    EXPECT_TRUE(linesEveryOtherStepBeyond({step(5)},
+                                          {step(1), step(2), nosing(1.0 + 2.5 * kRun, 3 * kRise)})
+                    .empty());
 }
 
 }  // namespace

@@ -112,6 +112,7 @@ void readDetection(const SectionReader& r, DetectorParams& p) {
     r.number("min_level_tread_slope_deg", p.min_level_tread_slope_deg);
     r.number("min_deep_tread_m", p.min_deep_tread_m);
     r.number("max_double_step_rise_m", p.max_double_step_rise_m);
+    r.boolean("continue_every_other_step", p.continue_every_other_step);
     r.number("max_slope_deg", p.max_slope_deg);
     r.number("max_parallel_deg", p.max_parallel_deg);
     r.number("edge_height_tolerance_m", p.edge_height_tolerance_m);
