@@ -168,6 +168,65 @@ bool startsFromRaisedLanding(const PointCloud& cloud, const std::vector<LineSegm
 
 namespace {
 
+/// [m] distance in the vertical plane up the chain from (s, z) to the stair profile of `edges`
+/// (edge k at s = edge_s[k]): tread k at its edge's height from edge_s[k] on, the risers below
+/// edges k and k + 1 (the first one a rise high). The point lies in [edge_s[k], edge_s[k + 1]].
+double stairProfileDistance(const std::vector<LineSegment>& edges,
+                            const std::vector<double>& edge_s, std::size_t k, double s, double z,
+                            double rise) {
+    const auto riser = [&](std::size_t j) {  // the riser under edge j
+        const double top = edges[j].z, bottom = j > 0 ? edges[j - 1].z : top - rise;
+        const double dz = z > top ? z - top : (z < bottom ? bottom - z : 0.0);
+        return std::hypot(s - edge_s[j], dz);
+    };
+    double d = std::min(std::abs(z - edges[k].z), riser(k));
+    if (k + 1 < edges.size()) d = std::min(d, riser(k + 1));
+    return d;
+}
+
+}  // namespace
+
+bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                           const FlightContinuationParams& p) {
+    if (edges.size() < 2) return false;
+    const ChainStep step = chainStep(edges);
+    if (step.rise <= 0.0 || step.run <= 0.0) return false;
+    const LineSegment& first = edges.front();
+    const Eigen::Vector2d c = first.centre(), u = first.direction();
+    const double half = 0.5 * first.length() * (1.0 - 2.0 * p.end_fraction);
+    std::vector<double> edge_s;  // each edge's distance up the chain from the first
+    for (const LineSegment& e : edges) edge_s.push_back(step.up.dot(e.centre() - c));
+    const double z_lo = first.z - step.rise, z_hi = edges.back().z + step.rise;
+    // The ramp: least-squares line z = a + b s; the stair: each tread at its edge's height.
+    double n = 0, ss = 0, sz = 0, sss = 0, ssz = 0, szz = 0, stair = 0;
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!q.allFinite() || q.z() < z_lo || q.z() > z_hi) continue;
+        const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
+        const double s = step.up.dot(d);
+        if (s < 0.0 || s > edge_s.back() || std::abs(u.dot(d)) > half) continue;
+        const double z = q.z() - first.z;
+        std::size_t k = 0;
+        while (k + 1 < edges.size() && edge_s[k + 1] <= s) ++k;
+        const double off = stairProfileDistance(edges, edge_s, k, s, q.z(), step.rise);
+        stair += off * off;
+        n += 1;
+        ss += s;
+        sz += z;
+        sss += s * s;
+        ssz += s * z;
+        szz += z * z;
+    }
+    if (n < p.ramp_min_points) return false;
+    const double var_s = sss / n - (ss / n) * (ss / n);
+    if (var_s < 1e-6) return false;
+    const double cov = ssz / n - (ss / n) * (sz / n), var_z = szz / n - (sz / n) * (sz / n);
+    const double ramp_rms = std::sqrt(std::max(0.0, var_z - cov * cov / var_s));
+    const double stair_rms = std::sqrt(stair / n);
+    return ramp_rms < p.ramp_max_rms_ratio * stair_rms;
+}
+
+namespace {
+
 /// The line of `lines` two steps (of `step`) beyond `from`, the nearest to two runs; -1 if none.
 int lineTwoStepsBeyond(const std::vector<LineSegment>& lines, const LineSegment& from,
                        const ChainStep& step, const FlightContinuationParams& p) {

@@ -47,6 +47,13 @@ struct FlightContinuationParams {
     double beyond_max_rises = 2.5;
     /// [0..1] ... overlapping the last edge over this fraction of the shorter one
     double beyond_min_overlap = 0.5;
+    /// A ramp's chain (treadsRiseAlongTheRun): the points between its first and last edge lie
+    /// closer (RMS) to one sloped line than this fraction of their distance to the stair's
+    /// profile (treads at their edges' heights, risers under the edges) ... 0.8: check3 r0280's
+    /// ramp reads 0.73; of the dev sets' chains tested, those below 0.9 were continued by no cue
+    /// anyway, the flights read 1.08 and more
+    double ramp_max_rms_ratio = 0.8;
+    int ramp_min_points = 20;  ///< [-] ... and are at least this many
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
@@ -104,6 +111,15 @@ bool nothingBeyondLastEdge(const PointCloud& cloud, const std::vector<LineSegmen
 std::vector<int> linesEveryOtherStepBeyond(const std::vector<LineSegment>& lines,
                                            const std::vector<LineSegment>& edges,
                                            const FlightContinuationParams& params = {});
+
+/// Whether the points between the first and the last edge of `edges` (as above, real z) lie on
+/// one sloped surface: closer (RMS) to one line of height against the distance up the chain than
+/// ramp_max_rms_ratio times their distance to the treads a stair would have there, each at its
+/// edge's height. The rings of a LiDAR crossing a ramp give edge lines a "rise" apart, and the
+/// ramp beyond the last one reads as the next tread (check3 r0280, a 14 deg ramp seen by a
+/// pitched OS1-64). Cost: one pass over the cloud.
+bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                           const FlightContinuationParams& params = {});
 
 /// The nosing one rise above and one run behind the last edge (unseen, num_points 0), as wide as it.
 LineSegment nextNosing(const std::vector<LineSegment>& edges);

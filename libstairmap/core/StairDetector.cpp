@@ -249,6 +249,7 @@ FlightContinuationParams continuationParams(const DetectorParams& p) {
 bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorParams& p,
                         std::vector<LineSegment>& edges) {
     const FlightContinuationParams cp = continuationParams(p);
+    if (treadsRiseAlongTheRun(cloud, edges, cp)) return false;  // a ramp's ring lines
     if (treadAboveLastEdge(cloud, edges, cp)) {
         edges.push_back(nextNosing(edges));
         return true;
@@ -383,6 +384,8 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         };
         if (std::any_of(edges.begin(), edges.end(), onFound)) return false;
         beyond = linesEveryOtherStepBeyond(lines, edges, continuationParams(p));
+        if (!beyond.empty() && treadsRiseAlongTheRun(cloud, edges, continuationParams(p)))
+            beyond.clear();  // a ramp's ring lines
         if (beyond.empty()) return false;
         for (int k : beyond) {
             edges.push_back(halfwayNosing(edges.back(), lines[k]));

@@ -218,5 +218,40 @@ TEST(FlightContinuation, AnIrregularChainGetsNoLinesBeyond) {
                     .empty());
 }
 
+/// Points on the risers under steps 1..3 (x = their nosings), 2 cm apart, y in [-0.6, 0.6].
+void addRisers(PointCloud& cloud) {
+    for (int k = 1; k <= 3; ++k)
+        for (double z = (k - 1) * kRise; z < k * kRise; z += 0.02)
+            for (double y = -0.6; y <= 0.6; y += 0.02)
+                cloud.emplace_back(float(1.0 + (k - 1) * kRun), float(y), float(z));
+}
+
+TEST(FlightContinuation, ARampThroughTheEdgesIsNoStair) {
+    // A ramp rising one rise per run through the three edges' lines (a LiDAR's rings on it give
+    // such edges), its points 2 cm apart with +-1 cm of noise.
+    PointCloud ramp;
+    int i = 0;
+    for (double x = 0.9; x < 1.0 + 3 * kRun; x += 0.02)
+        for (double y = -0.6; y <= 0.6; y += 0.02, ++i)
+            ramp.emplace_back(float(x), float(y),
+                              float(kRise + (x - 1.0) * kRise / kRun + ((i % 3) - 1) * 0.01));
+    EXPECT_TRUE(treadsRiseAlongTheRun(ramp, {step(1), step(2), step(3)}));
+}
+
+TEST(FlightContinuation, AStairsTreadsAndRisersOrItsRisersAloneAreNoRamp) {
+    const std::vector<LineSegment> edges = {step(1), step(2), step(3)};
+    PointCloud stair = threeTreads();
+    addRisers(stair);
+    EXPECT_FALSE(treadsRiseAlongTheRun(stair, edges));
+    PointCloud risers;  // a far LiDAR's riser hits
+    addRisers(risers);
+    EXPECT_FALSE(treadsRiseAlongTheRun(risers, edges));
+    EXPECT_FALSE(treadsRiseAlongTheRun(threeTreads(), edges));
+    // Too few points to tell: no ramp.
+    PointCloud few;
+    for (int k = 0; k < 10; ++k) few.emplace_back(float(1.0 + 0.05 * k), 0.0f, float(kRise));
+    EXPECT_FALSE(treadsRiseAlongTheRun(few, edges));
+}
+
 }  // namespace
 }  // namespace stairmap
