@@ -249,16 +249,19 @@ FlightContinuationParams continuationParams(const DetectorParams& p) {
 bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorParams& p,
                         std::vector<LineSegment>& edges) {
     const FlightContinuationParams cp = continuationParams(p);
-    if (treadsRiseAlongTheRun(cloud, edges, cp)) return false;  // a ramp's ring lines
+    // A ramp's ring lines pass these tests too; asked once one passes (a pass over the cloud).
+    const auto ramp = [&] { return treadsRiseAlongTheRun(cloud, edges, cp); };
     if (treadAboveLastEdge(cloud, edges, cp)) {
+        if (ramp()) return false;
         edges.push_back(nextNosing(edges));
         return true;
     }
     if (treadBelowFirstEdge(cloud, edges, floor_z, cp)) {
+        if (ramp()) return false;
         edges.insert(edges.begin(), previousNosing(edges));
         return true;
     }
-    return startsFromRaisedLanding(cloud, edges, floor_z, cp);
+    return startsFromRaisedLanding(cloud, edges, floor_z, cp) && !ramp();
 }
 
 /// Whether a short chain can be continued at all: none put back in between, a regular straight
