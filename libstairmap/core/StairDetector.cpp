@@ -357,15 +357,17 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     }
     // The chain that ended the search one edge short, or another as long, when `counts` says its
     // edges are a flight (it may add the edge it continues with). Returns the chain taken.
+    // `may` is a point-free test of the uncorrected edges that `counts` needs to pass.
+    const auto anyChain = [](const std::vector<LineSegment>&) { return true; };
     const auto continueRefused = [&](const std::vector<LineSegment>& from,
                                      const std::vector<int>& first,
-                                     const std::vector<std::vector<int>>& ties,
-                                     const auto& counts) -> const std::vector<int>* {
+                                     const std::vector<std::vector<int>>& ties, const auto& counts,
+                                     const auto& may) -> const std::vector<int>* {
         if (static_cast<int>(first.size()) != p.min_steps - 1) return nullptr;
         for (std::size_t k = 0; k <= ties.size(); ++k) {
             const std::vector<int>& chain = k == 0 ? first : ties[k - 1];
             std::vector<LineSegment> edges = edgesOf(from, chain);
-            if (!mayContinue(edges, p)) continue;
+            if (!mayContinue(edges, p) || !may(edges)) continue;
             correct(edges);
             if (counts(edges)) {
                 out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
@@ -398,9 +400,16 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         return true;
     };
     if (up) {
-        const std::vector<int>* taken = continueRefused(lines, refused, refused_ties, continued);
+        const std::vector<int>* taken =
+            continueRefused(lines, refused, refused_ties, continued, anyChain);
+        // Its corrections are a pass over the cloud each: only for chains with a line already
+        // two steps beyond their uncorrected last edge.
+        const auto lineBeyond = [&](const std::vector<LineSegment>& edges) {
+            return !linesEveryOtherStepBeyond(lines, edges, continuationParams(p)).empty();
+        };
         if (!taken && p.continue_every_other_step)
-            taken = continueRefused(lines, refused, refused_ties, continuedEveryOtherStep);
+            taken =
+                continueRefused(lines, refused, refused_ties, continuedEveryOtherStep, lineBeyond);
         if (taken) {
             if (!used.empty()) {  // kept only for the searches below and the debug record
                 for (int idx : *taken) used[idx] = 1;
@@ -453,11 +462,14 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         // also when its treads are min_deep_tread_m deep and nothing is seen one step beyond its
         // last edge (the real ANYmal entrance from its landing: the top tread's far part is
         // unmapped), where a stage's platform would be seen.
-        continueRefused(rest, deep_refused, deep_ties, [&](std::vector<LineSegment>& edges) {
-            if (beyondBound(edges) && continued(edges)) return true;
-            return isDeepLevel(edges, p.min_deep_tread_m, seen_densely) &&
-                   unseenBeyondLastEdge(cloud, edges, continuationParams(p));
-        });
+        continueRefused(
+            rest, deep_refused, deep_ties,
+            [&](std::vector<LineSegment>& edges) {
+                if (beyondBound(edges) && continued(edges)) return true;
+                return isDeepLevel(edges, p.min_deep_tread_m, seen_densely) &&
+                       unseenBeyondLastEdge(cloud, edges, continuationParams(p));
+            },
+            anyChain);
     }
     // Ring-aliased flights (DetectorParams::max_double_step_rise_m): the search again on the
     // lines left, for pairs two steps apart; the skipped nosings are put back halfway.
