@@ -197,7 +197,7 @@ bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegmen
     std::vector<double> edge_s;  // each edge's distance up the chain from the first
     for (const LineSegment& e : edges) edge_s.push_back(step.up.dot(e.centre() - c));
     const double z_lo = first.z - step.rise, z_hi = edges.back().z + step.rise;
-    // The ramp: least-squares line z = a + b s; the stair: each tread at its edge's height.
+    // The ramp: least-squares line z = a + b s; the stair: the profile its edges make.
     double n = 0, ss = 0, sz = 0, sss = 0, ssz = 0, szz = 0, stair = 0;
     for (const Eigen::Vector3f& q : cloud) {
         if (!q.allFinite() || q.z() < z_lo || q.z() > z_hi) continue;
