@@ -98,6 +98,11 @@ struct DetectorParams {
     /// (FlightContinuation.h, linesEveryOtherStepBeyond); they join it with the nosings between
     /// put back. A far level LiDAR sees three nosings and then every other one (dev2 r0133).
     bool continue_every_other_step = true;
+    /// A chain one edge short of min_steps is also continued where the cloud shows the next
+    /// step's riser one run beyond its last edge (FlightContinuation.h, riserAboveLastEdge): a
+    /// level LiDAR below the flight's upper treads sees their risers, not their treads (dev3
+    /// r0071, an HDL-32 6 m away). A stage's platform shows no riser there.
+    bool continue_by_next_riser = true;
     /// [m] ring-aliased flights: a far LiDAR may see every other nosing only (each pair two
     /// steps apart, runs beyond condition 2's bound). An ascending chain of such pairs, its rises
     /// in [2 min_step_height_m, this] and runs in [2 min_step_depth_m, 2 max_step_depth_m], whose

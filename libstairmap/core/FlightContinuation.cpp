@@ -104,6 +104,37 @@ bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     return showsTread(w, half, p);
 }
 
+bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                        const FlightContinuationParams& p) {
+    if (!isRegularStraightChain(edges, p)) return false;
+    const ChainStep step = chainStep(edges);
+    const LineSegment& last = edges.back();
+    const Eigen::Vector2d c = last.centre(), u = last.direction();
+    const double half = 0.5 * last.length() * (1.0 - 2.0 * p.end_fraction);
+    const double s_lo = p.riser_from_runs * step.run, s_hi = p.riser_to_runs * step.run;
+    const double z_lo = last.z + p.riser_from_rises * step.rise;
+    const double z_hi = last.z + p.riser_to_rises * step.rise;
+    int on = 0, level = 0, above = 0;
+    double t_min = 1e9, t_max = -1e9;
+    for (const Eigen::Vector3f& q : cloud) {
+        if (!q.allFinite()) continue;
+        const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
+        const double s = step.up.dot(d), t = u.dot(d);
+        if (s < s_lo || s > s_hi || std::abs(t) > half) continue;
+        if (q.z() >= z_lo && q.z() <= z_hi) {
+            ++on;
+            t_min = std::min(t_min, t);
+            t_max = std::max(t_max, t);
+        } else if (std::abs(q.z() - last.z) <= p.tread_dz_m && s > step.run + p.tread_dz_m) {
+            ++level;
+        } else if (q.z() > last.z + step.rise + p.above_dz_m) {
+            ++above;
+        }
+    }
+    return on >= p.min_points && on > level && 4 * above <= on &&
+           t_max - t_min >= p.min_spread_fraction * 2.0 * half;
+}
+
 bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                          double floor_z, const FlightContinuationParams& p) {
     if (!isRegularStraightChain(edges, p)) return false;

@@ -54,6 +54,14 @@ struct FlightContinuationParams {
     /// anyway, the flights read 1.08 and more
     double ramp_max_rms_ratio = 0.8;
     int ramp_min_points = 20;  ///< [-] ... and are at least this many
+    /// The next step's riser (riserAboveLastEdge): its window this many runs behind the last
+    /// edge (the riser stands one run behind it; range noise and a run read a few cm off) ...
+    double riser_from_runs = 0.8;
+    double riser_to_runs = 1.3;
+    /// [-] ... and this many rises above it: the riser's face, clear of the last tread's
+    /// points below and the next tread's above
+    double riser_from_rises = 0.25;
+    double riser_to_rises = 0.85;
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
@@ -70,6 +78,17 @@ bool isRegularStraightChain(const std::vector<LineSegment>& edges,
 /// and at most a quarter as many higher up there (a wall, a box). Rise and run are the chain's
 /// means. Non-finite points are ignored. Cost: one pass over the cloud.
 bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                        const FlightContinuationParams& params = {});
+
+/// Whether `edges` (as above) are a regular straight flight and the cloud shows the riser of the
+/// step above the last edge: points riser_from_rises..riser_to_rises rises above the last edge in
+/// the window riser_from_runs..riser_to_runs runs behind it, spread along it (as the next tread's),
+/// more of them than points at the last edge's own height beyond one run (a platform going on)
+/// and at most a quarter as many a rise and above_dz higher (a wall). A level LiDAR lower than a
+/// flight's upper treads sees their risers only (dev3 r0071: an HDL-32 6 m away, its first three
+/// nosings seen); a two-step stage's platform shows no riser one run behind its edge. Cost: one
+/// pass over the cloud.
+bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                         const FlightContinuationParams& params = {});
 
 /// Whether `edges` (as above) are a regular straight flight whose first edge lies two rises above

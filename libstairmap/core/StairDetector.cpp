@@ -244,8 +244,9 @@ FlightContinuationParams continuationParams(const DetectorParams& p) {
 
 /// A chain one edge short of min_steps (ascending, real z, corrected): the foot of a longer flight
 /// when the cloud shows the tread above its last edge (the next nosing is added) or below a first
-/// edge two rises up (the previous one is added), or a flight from a raised landing
-/// (FlightContinuation); else it may be a stage. Returns whether `edges` now count as a flight.
+/// edge two rises up (the previous one is added), a flight from a raised landing, or the next
+/// step's riser above the last edge (the next nosing is added; FlightContinuation); else it may
+/// be a stage. Returns whether `edges` now count as a flight.
 bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorParams& p,
                         std::vector<LineSegment>& edges) {
     const FlightContinuationParams cp = continuationParams(p);
@@ -261,7 +262,13 @@ bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorP
         edges.insert(edges.begin(), previousNosing(edges));
         return true;
     }
-    return startsFromRaisedLanding(cloud, edges, floor_z, cp) && !ramp();
+    if (startsFromRaisedLanding(cloud, edges, floor_z, cp) && !ramp()) return true;
+    if (p.continue_by_next_riser && riserAboveLastEdge(cloud, edges, cp)) {
+        if (ramp()) return false;
+        edges.push_back(nextNosing(edges));
+        return true;
+    }
+    return false;
 }
 
 /// Whether a short chain can be continued at all: none put back in between, a regular straight

@@ -84,6 +84,52 @@ TEST(FlightContinuation, ALowRiseIsTakenWithinTheNoiseOfItsMean) {
     }
 }
 
+/// Points on a vertical rectangle at distance x, y in [-0.6, 0.6], z in [z0, z1], 2 cm apart.
+void addRiser(PointCloud& cloud, double x, double z0, double z1) {
+    for (double z = z0; z < z1; z += 0.02)
+        for (double y = -0.6; y <= 0.6; y += 0.02) cloud.emplace_back(float(x), float(y), float(z));
+}
+
+TEST(FlightContinuation, TheNextStepsRiserAboveTheLastEdgeContinuesTheChain) {
+    // A level LiDAR below the upper treads: the riser of step 4 seen, its tread not.
+    PointCloud cloud = threeTreads();
+    addRiser(cloud, 1.0 + 3 * kRun, 3 * kRise, 4 * kRise);
+    const std::vector<LineSegment> edges = {step(1), step(2), step(3)};
+    EXPECT_TRUE(riserAboveLastEdge(cloud, edges));
+    EXPECT_FALSE(treadAboveLastEdge(cloud, edges));  // the cue the tread test misses
+    // The riser alone, without the treads in front (a sparse view's hits on it): still a riser.
+    PointCloud riser_only;
+    addRiser(riser_only, 1.0 + 3 * kRun, 3 * kRise, 4 * kRise);
+    EXPECT_TRUE(riserAboveLastEdge(riser_only, edges));
+}
+
+TEST(FlightContinuation, AStagesPlatformOrAWallBehindTheLastEdgeIsNoRiser) {
+    const std::vector<LineSegment> edges = {step(1), step(2), step(3)};
+    PointCloud platform = threeTreads();
+    addTread(platform, 1.0 + 3 * kRun, 5.0, 3 * kRise);
+    EXPECT_FALSE(riserAboveLastEdge(platform, edges));
+    // A wall one run behind the platform's edge, from the platform up to 2 m: its points at the
+    // riser's heights are outnumbered by those above.
+    PointCloud wall = threeTreads();
+    addRiser(wall, 1.0 + 3 * kRun, 3 * kRise, 2.0);
+    EXPECT_FALSE(riserAboveLastEdge(wall, edges));
+    // A riser too low (a second stage's edge half a rise up) or in the wrong place (two runs
+    // behind) is not the next step's.
+    PointCloud low = threeTreads();
+    addRiser(low, 1.0 + 3 * kRun, 3 * kRise, 3.2 * kRise);
+    EXPECT_FALSE(riserAboveLastEdge(low, edges));
+    PointCloud far = threeTreads();
+    addRiser(far, 1.0 + 4 * kRun, 3 * kRise, 4 * kRise);
+    EXPECT_FALSE(riserAboveLastEdge(far, edges));
+}
+
+TEST(FlightContinuation, AnIrregularChainIsNotContinuedByARiser) {
+    PointCloud cloud = threeTreads();
+    addRiser(cloud, 1.0 + 3 * kRun, 3 * kRise, 4 * kRise);
+    EXPECT_FALSE(
+        riserAboveLastEdge(cloud, {step(1), step(2), nosing(1.0 + 2.5 * kRun, 3 * kRise)}));
+}
+
 TEST(FlightContinuation, TheTreadBelowAFirstEdgeTwoRisesUpAddsThePreviousNosing) {
     PointCloud cloud = threeTreads();
     addTread(cloud, 1.0 + 3 * kRun, 1.0 + 4 * kRun, 4 * kRise);

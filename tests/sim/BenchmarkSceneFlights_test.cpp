@@ -172,6 +172,16 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{4004, 42, 0.02, 0.03, true, "depth camera, two chains"},
                     SceneCase{4004, 92, 0.02, 0.03, true, "level HDL-32, debris flight"}));
 
+// Chains of three nosings continued by the next step's riser seen one run beyond the last
+// (riserAboveLastEdge): a level HDL-32 6.3 m from an 8-step flight of 0.14 m rises sees its first
+// three nosings and the risers above (dev3 r0071), and a depth camera pitched down 27 deg 0.8 m
+// from a walled debris flight of 0.116 m rises sees three nosings and the fourth riser at the
+// edge of its view (dev3 r0037). Each was refused as a two-step stage.
+INSTANTIATE_TEST_SUITE_P(
+    NextRiserSeen, MissedBefore,
+    testing::Values(SceneCase{4004, 71, 0.01, 0.02, true, "level HDL-32 at 6.3 m"},
+                    SceneCase{4004, 37, 0.01, 0.02, true, "depth camera, view ends at a riser"}));
+
 TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
     const sim::RandomCloud scene = test::benchmarkScene(1001, 175);
     ASSERT_EQ(scene.truth.staircases.size(), 1u);
