@@ -103,6 +103,12 @@ struct DetectorParams {
     /// level LiDAR below the flight's upper treads sees their risers, not their treads (dev3
     /// r0071, an HDL-32 6 m away). A stage's platform shows no riser there.
     bool continue_by_next_riser = true;
+    /// [-] an ascending straight flight whose points between its first and last edge lie closer
+    /// (RMS) to one sloped line than this fraction of their distance to its stair profile is a
+    /// ramp's ring lines and dropped (FlightContinuation.h, treadsRiseAlongTheRun); 0 = off. The
+    /// short chains' continuation asks 0.8 (ramp_max_rms_ratio); whole flights read 0.75 and
+    /// more on the dev sets, the ramp of check4 r0150 0.15-0.46.
+    double max_ramp_rms_ratio = 0.6;
     /// [m] ring-aliased flights: a far LiDAR may see every other nosing only (each pair two
     /// steps apart, runs beyond condition 2's bound). An ascending chain of such pairs, its rises
     /// in [2 min_step_height_m, this] and runs in [2 min_step_depth_m, 2 max_step_depth_m], whose

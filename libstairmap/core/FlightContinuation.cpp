@@ -230,11 +230,14 @@ bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegmen
     const double z_lo = first.z - step.rise, z_hi = edges.back().z + step.rise;
     // The ramp: least-squares line z = a + b s; the stair: the profile its edges make.
     double n = 0, ss = 0, sz = 0, sss = 0, ssz = 0, szz = 0, stair = 0;
+    const float zf_lo = static_cast<float>(z_lo), zf_hi = static_cast<float>(z_hi);
     for (const Eigen::Vector3f& q : cloud) {
-        if (!q.allFinite() || q.z() < z_lo || q.z() > z_hi) continue;
+        // Height first (most of a cloud lies outside the band; NaN fails it), then the strip
+        // (a NaN x or y fails its comparisons too).
+        if (!(q.z() >= zf_lo && q.z() <= zf_hi)) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d);
-        if (s < 0.0 || s > edge_s.back() || std::abs(u.dot(d)) > half) continue;
+        if (!(s >= 0.0 && s <= edge_s.back() && std::abs(u.dot(d)) <= half)) continue;
         const double z = q.z() - first.z;
         std::size_t k = 0;
         while (k + 1 < edges.size() && edge_s[k + 1] <= s) ++k;

@@ -615,6 +615,48 @@ void dropFlightsBelowARise(const DetectorParams& p, std::vector<Staircase>& flig
                   flights.end());
 }
 
+/// [deg] a flight whose edges all lie within this of its last edge's direction is straight enough
+/// for the ramp test below: Algorithm 1's chains through spirals turn 30-90 deg over their steps
+/// (and their points lie off a straight stair's profile), a ramp's ring lines 9-18 deg (check4
+/// r0150); straight flights turn 0-16 deg (dev sets)
+constexpr double kRampTestMaxTurnDeg = 25.0;
+
+/// [deg] a ramp's ring lines lie on its surface: their flight reads the ramp's slope (5-15 deg
+/// in the benchmark; check4 r0150's 14.8 deg ramp reads 15.3 and 16.7 deg), where a stair's is
+/// 14-45 deg. Only flights this shallow are tested (the test is a pass over the cloud).
+constexpr double kRampTestMaxSlopeDeg = 22.0;
+
+/// Whether all edges of `s` lie within kRampTestMaxTurnDeg of its last edge.
+bool nearlyStraight(const Staircase& s) {
+    const Eigen::Vector3d last = s.steps.back().end - s.steps.back().start;
+    const Eigen::Vector2d d = last.head<2>().normalized();
+    const double cos_max = std::cos(kRampTestMaxTurnDeg * M_PI / 180.0);
+    return std::all_of(s.steps.begin(), s.steps.end(), [&](const StairEdge& e) {
+        return std::abs((e.end - e.start).head<2>().normalized().dot(d)) >= cos_max;
+    });
+}
+
+/// Ascending flights whose points lie on one sloped surface (treadsRiseAlongTheRun, asked with
+/// p.max_ramp_rms_ratio) are a ramp's ring lines: a level LiDAR's rings cross a ramp a "rise"
+/// apart and four or five of them chain like nosings (check4 r0150, a 14.8 deg ramp 4 m from a
+/// level HDL-32: ratios 0.46 and 0.15). Found flights on the dev sets read 0.75 and more.
+void dropRampFlights(const PointCloud& cloud, const DetectorParams& p,
+                     std::vector<Staircase>& flights) {
+    if (p.max_ramp_rms_ratio <= 0) return;
+    FlightContinuationParams cp;
+    cp.ramp_max_rms_ratio = p.max_ramp_rms_ratio;
+    const auto ramp = [&](const Staircase& s) {
+        if (s.direction != StairDirection::Ascending || s.steps.size() < 2 ||
+            s.slope_rad > kRampTestMaxSlopeDeg * M_PI / 180.0 || !nearlyStraight(s))
+            return false;
+        std::vector<LineSegment> edges;
+        for (const StairEdge& e : s.steps)
+            edges.push_back(unseenNosing(e.start.head<2>(), e.end.head<2>(), e.start.z()));
+        return treadsRiseAlongTheRun(cloud, edges, cp);
+    };
+    flights.erase(std::remove_if(flights.begin(), flights.end(), ramp), flights.end());
+}
+
 /// [m] the column is looked for this far beyond the nosings' inner ends, and this far above the
 /// highest nosing (the column's top above the last tread) and kColumnBelow below the lowest
 constexpr double kColumnReach = 0.10, kColumnAbove = 0.30, kColumnBelow = 0.05;
@@ -680,6 +722,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     // same levels, their found edges side by side, but their measured treads overlap.
     mergeOverlappingFlights(result.staircases);
     dropFlightsBelowARise(params_, result.staircases);
+    dropRampFlights(cloud_robot, params_, result.staircases);
     dropSecondViews(result.staircases);  // the chains Algorithm 2 left: levels differ (dev3 r0042)
     if (debug) debug->accepted = result.staircases;
     return result;

@@ -106,6 +106,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadValue{"min_deep_tread_m",  // deeper than the deep search reaches
                  [](DetectorParams& p) { p.min_deep_tread_m = 0.7; }},
         BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }},
+        BadValue{"max_ramp_rms_ratio", [](DetectorParams& p) { p.max_ramp_rms_ratio = -0.1; }},
         // Top-view grid over the memory budget (the far-extent case of issue 8).
         BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},
         BadValue{"max_range_m",

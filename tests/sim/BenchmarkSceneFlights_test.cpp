@@ -219,6 +219,19 @@ TEST(NegativeScene, ARampSeenByALevelLidarIsNoFlight) { expectNoFlight(4004, 265
 // must meet condition 1 outright. (The same ramp rebuilt with other sensor noise gives no chain.)
 TEST(NegativeScene, ARampBesideAPitchedLidarIsNoFlight) { expectNoFlight(2002, 165); }
 
+// A negative of the fourth check set (seed 7007, scene 150, looked at after scoring): a 14.8 deg
+// ramp up, 3.4 m wide, 4.2 m ahead of a level HDL-32. Its rings chain into two "flights" of four
+// edges (0.10 and 0.13 m rises, slopes 15-17 deg) that pass condition 1; their points lie on one
+// sloped line, not on a stair's profile (dropRampFlights). Without that test both are reported.
+TEST(NegativeScene, ARampAheadOfALevelLidarIsNoFlight) {
+    expectNoFlight(7007, 150);
+    const sim::RandomCloud scene = test::benchmarkScene(7007, 150);
+    DetectorParams off;
+    off.max_ramp_rms_ratio = 0.0;
+    EXPECT_FALSE(
+        StairDetector(off).detect(scene.cloud, scene.truth.observer_floor_z).staircases.empty());
+}
+
 // Steps down into a pit, from whose floor a flight rises (dev2 r0024, dev3 r0081, offset by 3
 // steps): the pit's steps read as a descending chain of three whose first nosing lies only 0.6-0.75
 // of its rise below the robot's floor, so the floor's edge cannot be its top nosing. No descending

@@ -82,6 +82,9 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_DOUBLE_EQ(c.params.tilted_ring_row_height_m, d.tilted_ring_row_height_m);
     EXPECT_EQ(c.params.azimuth_bins, d.azimuth_bins);
     EXPECT_EQ(c.params.min_steps, d.min_steps);
+    EXPECT_EQ(c.params.continue_every_other_step, d.continue_every_other_step);
+    EXPECT_EQ(c.params.continue_by_next_riser, d.continue_by_next_riser);
+    EXPECT_DOUBLE_EQ(c.params.max_ramp_rms_ratio, d.max_ramp_rms_ratio);
     ASSERT_TRUE(c.robot_height_m.has_value());
     EXPECT_GT(*c.robot_height_m, 0.0);
 }
