@@ -230,11 +230,20 @@ bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegmen
     const double z_lo = first.z - step.rise, z_hi = edges.back().z + step.rise;
     // The ramp: least-squares line z = a + b s; the stair: the profile its edges make.
     double n = 0, ss = 0, sz = 0, sss = 0, ssz = 0, szz = 0, stair = 0;
-    const float zf_lo = static_cast<float>(z_lo), zf_hi = static_cast<float>(z_hi);
+    // The strip's XY bounding box (its four corners), then the strip: most points fail the
+    // box's float comparisons; a NaN coordinate fails them too.
+    Eigen::Vector2d lo = c, hi = c;
+    for (const double a : {0.0, edge_s.back()})
+        for (const double b : {-half, half}) {
+            lo = lo.cwiseMin(c + a * step.up + b * u);
+            hi = hi.cwiseMax(c + a * step.up + b * u);
+        }
+    const Eigen::Vector3f box_lo(float(lo.x()), float(lo.y()), float(z_lo));
+    const Eigen::Vector3f box_hi(float(hi.x()), float(hi.y()), float(z_hi));
     for (const Eigen::Vector3f& q : cloud) {
-        // Height first (most of a cloud lies outside the band; NaN fails it), then the strip
-        // (a NaN x or y fails its comparisons too).
-        if (!(q.z() >= zf_lo && q.z() <= zf_hi)) continue;
+        if (!(q.z() >= box_lo.z() && q.z() <= box_hi.z() && q.x() >= box_lo.x() &&
+              q.x() <= box_hi.x() && q.y() >= box_lo.y() && q.y() <= box_hi.y()))
+            continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d);
         if (!(s >= 0.0 && s <= edge_s.back() && std::abs(u.dot(d)) <= half)) continue;

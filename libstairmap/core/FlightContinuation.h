@@ -134,9 +134,9 @@ std::vector<int> linesEveryOtherStepBeyond(const std::vector<LineSegment>& lines
 /// Whether the points between the first and the last edge of `edges` (as above, real z) lie on
 /// one sloped surface: closer (RMS) to one line of height against the distance up the chain than
 /// ramp_max_rms_ratio times their distance to the stair profile the edges make (treads at their
-/// edges' heights, risers under the edges). The rings of a LiDAR crossing a ramp give edge lines a "rise" apart, and the
-/// ramp beyond the last one reads as the next tread (check3 r0280, a 14 deg ramp seen by a
-/// pitched OS1-64). Cost: one pass over the cloud.
+/// edges' heights, risers under the edges). The rings of a LiDAR crossing a ramp give edge lines
+/// a "rise" apart, and the ramp beyond the last one reads as the next tread (check3 r0280, a 14
+/// deg ramp seen by a pitched OS1-64). Cost: one pass over the cloud (a box test per point).
 bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                            const FlightContinuationParams& params = {});
 

@@ -621,10 +621,11 @@ void dropFlightsBelowARise(const DetectorParams& p, std::vector<Staircase>& flig
 /// r0150); straight flights turn 0-16 deg (dev sets)
 constexpr double kRampTestMaxTurnDeg = 25.0;
 
-/// [deg] a ramp's ring lines lie on its surface: their flight reads the ramp's slope (5-15 deg
-/// in the benchmark; check4 r0150's 14.8 deg ramp reads 15.3 and 16.7 deg), where a stair's is
+/// [deg] a ramp's ring lines lie on its surface: their flight reads about the ramp's slope (5-15
+/// deg in the benchmark; check4 r0150's 14.8 deg ramp reads 15.3 and 16.7 deg; pitched LiDARs'
+/// slanted rings on 11-15 deg ramps read 24.4-24.6 deg, check5 r0095, r0294), where a stair's is
 /// 14-45 deg. Only flights this shallow are tested (the test is a pass over the cloud).
-constexpr double kRampTestMaxSlopeDeg = 22.0;
+constexpr double kRampTestMaxSlopeDeg = 30.0;
 
 /// Whether all edges of `s` lie within kRampTestMaxTurnDeg of its last edge.
 bool nearlyStraight(const Staircase& s) {
@@ -637,9 +638,10 @@ bool nearlyStraight(const Staircase& s) {
 }
 
 /// Ascending flights whose points lie on one sloped surface (treadsRiseAlongTheRun, asked with
-/// p.max_ramp_rms_ratio) are a ramp's ring lines: a level LiDAR's rings cross a ramp a "rise"
-/// apart and four or five of them chain like nosings (check4 r0150, a 14.8 deg ramp 4 m from a
-/// level HDL-32: ratios 0.46 and 0.15). Found flights on the dev sets read 0.75 and more.
+/// p.max_ramp_rms_ratio) are a ramp's ring lines: a LiDAR's rings cross a ramp a "rise" apart and
+/// four or five of them chain like nosings (check4 r0150, a 14.8 deg ramp 4 m from a level
+/// HDL-32: ratios 0.46 and 0.15). Found flights on the dev sets read 0.75 and more. (Descending
+/// flights in mirrored z lost three dev flights seen from above at the same bound: not asked.)
 void dropRampFlights(const PointCloud& cloud, const DetectorParams& p,
                      std::vector<Staircase>& flights) {
     if (p.max_ramp_rms_ratio <= 0) return;

@@ -232,6 +232,15 @@ TEST(NegativeScene, ARampAheadOfALevelLidarIsNoFlight) {
         StairDetector(off).detect(scene.cloud, scene.truth.observer_floor_z).staircases.empty());
 }
 
+// Two negatives of a fifth check set (seed 8008, looked at after scoring): 10.7 and 14.6 deg
+// ramps up, 4-5 m from an HDL-32 and a VLP-16 pitched down 20 and 26 deg. Their slanted rings
+// chain into flights of four edges whose slope reads 24.4-24.6 deg (steeper than the ramps: the
+// chains run across the fall line); the ramp test asks flights up to 30 deg.
+TEST(NegativeScene, RampsBesidePitchedLidarsAreNoFlight) {
+    expectNoFlight(8008, 95);
+    expectNoFlight(8008, 294);
+}
+
 // Steps down into a pit, from whose floor a flight rises (dev2 r0024, dev3 r0081, offset by 3
 // steps): the pit's steps read as a descending chain of three whose first nosing lies only 0.6-0.75
 // of its rise below the robot's floor, so the floor's edge cannot be its top nosing. No descending
