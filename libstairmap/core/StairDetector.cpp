@@ -244,9 +244,8 @@ FlightContinuationParams continuationParams(const DetectorParams& p) {
 
 /// A chain one edge short of min_steps (ascending, real z, corrected): the foot of a longer flight
 /// when the cloud shows the tread above its last edge (the next nosing is added) or below a first
-/// edge two rises up (the previous one is added), a flight from a raised landing, or the next
-/// step's riser above the last edge (the next nosing is added; FlightContinuation); else it may
-/// be a stage. Returns whether `edges` now count as a flight.
+/// edge two rises up (the previous one is added), or a flight from a raised landing
+/// (FlightContinuation); else it may be a stage. Returns whether `edges` now count as a flight.
 bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorParams& p,
                         std::vector<LineSegment>& edges) {
     const FlightContinuationParams cp = continuationParams(p);
@@ -262,13 +261,21 @@ bool continueShortChain(const PointCloud& cloud, double floor_z, const DetectorP
         edges.insert(edges.begin(), previousNosing(edges));
         return true;
     }
-    if (startsFromRaisedLanding(cloud, edges, floor_z, cp) && !ramp()) return true;
-    if (p.continue_by_next_riser && riserAboveLastEdge(cloud, edges, cp)) {
-        if (ramp()) return false;
-        edges.push_back(nextNosing(edges));
-        return true;
-    }
-    return false;
+    return startsFromRaisedLanding(cloud, edges, floor_z, cp) && !ramp();
+}
+
+/// A chain one edge short of min_steps (as above) whose next step's riser the cloud shows above
+/// its last edge (FlightContinuation): the next nosing is added. Asked after every other
+/// continuation: a chain continued by lines every other step beyond it is a whole flight, this
+/// cue adds one step, and the chain's lines, once taken, continue nothing else (check7 r0174: a
+/// 13-step flight, found whole by the lines beyond, was split in two when this came first).
+bool continuedByNextRiser(const PointCloud& cloud, const DetectorParams& p,
+                          std::vector<LineSegment>& edges) {
+    const FlightContinuationParams cp = continuationParams(p);
+    if (!riserAboveLastEdge(cloud, edges, cp) || treadsRiseAlongTheRun(cloud, edges, cp))
+        return false;
+    edges.push_back(nextNosing(edges));
+    return true;
 }
 
 /// Whether a short chain can be continued at all: none put back in between, a regular straight
@@ -417,6 +424,13 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         if (!taken && p.continue_every_other_step)
             taken =
                 continueRefused(lines, refused, refused_ties, continuedEveryOtherStep, lineBeyond);
+        if (!taken && p.continue_by_next_riser) {
+            beyond.clear();
+            const auto byRiser = [&](std::vector<LineSegment>& edges) {
+                return continuedByNextRiser(cloud, p, edges);
+            };
+            taken = continueRefused(lines, refused, refused_ties, byRiser, anyChain);
+        }
         if (taken) {
             if (!used.empty()) {  // kept only for the searches below and the debug record
                 for (int idx : *taken) used[idx] = 1;
