@@ -83,6 +83,32 @@ bool showsTread(const TreadWindow& w, double half, const FlightContinuationParam
            w.spread() >= p.min_spread_fraction * 2.0 * half;
 }
 
+/// A float box around a strip (distance s along `up` in [s_lo, s_hi] from `c`, |t| along `u`
+/// at most `half`) and heights [z_lo, z_hi], padded by a centimetre: a point outside it is
+/// outside the strip (most of a cloud; two float comparisons reject it), one inside is tested
+/// exactly. A NaN coordinate fails the box.
+struct StripBox {
+    Eigen::Vector3f lo, hi;
+    bool mayContain(const Eigen::Vector3f& q) const {
+        return q.z() >= lo.z() && q.z() <= hi.z() && q.x() >= lo.x() && q.x() <= hi.x() &&
+               q.y() >= lo.y() && q.y() <= hi.y();
+    }
+};
+
+StripBox stripBox(const Eigen::Vector2d& c, const Eigen::Vector2d& up, const Eigen::Vector2d& u,
+                  double s_lo, double s_hi, double half, double z_lo, double z_hi) {
+    constexpr double kPad = 0.01;  // [m] far more than float rounding at 100 m
+    Eigen::Vector2d lo = c + s_lo * up, hi = lo;
+    for (const double a : {s_lo, s_hi})
+        for (const double b : {-half, half}) {
+            lo = lo.cwiseMin(c + a * up + b * u);
+            hi = hi.cwiseMax(c + a * up + b * u);
+        }
+    const auto f = [](double v) { return static_cast<float>(v); };
+    return {{f(lo.x() - kPad), f(lo.y() - kPad), f(z_lo - kPad)},
+            {f(hi.x() + kPad), f(hi.y() + kPad), f(z_hi + kPad)}};
+}
+
 }  // namespace
 
 bool isRegularStraightChain(const std::vector<LineSegment>& edges,
@@ -116,8 +142,10 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     const double z_hi = last.z + p.riser_to_rises * step.rise;
     int on = 0, level = 0, above = 0;
     double t_min = 1e9, t_max = -1e9;
+    const StripBox box = stripBox(c, step.up, u, s_lo, s_hi, half, last.z - p.tread_dz_m,
+                                  std::numeric_limits<double>::max());
     for (const Eigen::Vector3f& q : cloud) {
-        if (!q.allFinite()) continue;
+        if (!box.mayContain(q)) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d), t = u.dot(d);
         if (s < s_lo || s > s_hi || std::abs(t) > half) continue;
@@ -230,20 +258,11 @@ bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegmen
     const double z_lo = first.z - step.rise, z_hi = edges.back().z + step.rise;
     // The ramp: least-squares line z = a + b s; the stair: the profile its edges make.
     double n = 0, ss = 0, sz = 0, sss = 0, ssz = 0, szz = 0, stair = 0;
-    // The strip's XY bounding box (its four corners), then the strip: most points fail the
-    // box's float comparisons; a NaN coordinate fails them too.
-    Eigen::Vector2d lo = c, hi = c;
-    for (const double a : {0.0, edge_s.back()})
-        for (const double b : {-half, half}) {
-            lo = lo.cwiseMin(c + a * step.up + b * u);
-            hi = hi.cwiseMax(c + a * step.up + b * u);
-        }
-    const Eigen::Vector3f box_lo(float(lo.x()), float(lo.y()), float(z_lo));
-    const Eigen::Vector3f box_hi(float(hi.x()), float(hi.y()), float(z_hi));
-    for (const Eigen::Vector3f& q : cloud) {
-        if (!(q.z() >= box_lo.z() && q.z() <= box_hi.z() && q.x() >= box_lo.x() &&
-              q.x() <= box_hi.x() && q.y() >= box_lo.y() && q.y() <= box_hi.y()))
-            continue;
+    const StripBox box = stripBox(c, step.up, u, 0.0, edge_s.back(), half, z_lo, z_hi);
+    const std::size_t stride = std::max(1, p.ramp_point_stride);
+    for (std::size_t i = 0; i < cloud.size(); i += stride) {
+        const Eigen::Vector3f& q = cloud[i];
+        if (!box.mayContain(q) || q.z() < z_lo || q.z() > z_hi) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d);
         if (!(s >= 0.0 && s <= edge_s.back() && std::abs(u.dot(d)) <= half)) continue;

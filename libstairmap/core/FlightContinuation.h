@@ -54,6 +54,8 @@ struct FlightContinuationParams {
     /// anyway, the flights read 1.08 and more
     double ramp_max_rms_ratio = 0.8;
     int ramp_min_points = 20;  ///< [-] ... and are at least this many
+    /// [-] ... of every this-many-th point of the cloud (1: all; a whole flight's test samples)
+    int ramp_point_stride = 1;
     /// The next step's riser (riserAboveLastEdge): its window this many runs behind the last
     /// edge (the riser stands one run behind it; range noise and a run read a few cm off) ...
     double riser_from_runs = 0.8;

@@ -641,6 +641,10 @@ constexpr double kRampTestMaxTurnDeg = 25.0;
 /// 14-45 deg. Only flights this shallow are tested (the test is a pass over the cloud).
 constexpr double kRampTestMaxSlopeDeg = 30.0;
 
+/// [-] the ramp test on a whole flight looks at every n-th point of the cloud, n chosen so that
+/// about this many are looked at: a ratio of two RMS distances needs no more
+constexpr std::size_t kRampTestSampledPoints = 16384;
+
 /// Whether all edges of `s` lie within kRampTestMaxTurnDeg of its last edge.
 bool nearlyStraight(const Staircase& s) {
     const Eigen::Vector3d last = s.steps.back().end - s.steps.back().start;
@@ -661,6 +665,8 @@ void dropRampFlights(const PointCloud& cloud, const DetectorParams& p,
     if (p.max_ramp_rms_ratio <= 0) return;
     FlightContinuationParams cp;
     cp.ramp_max_rms_ratio = p.max_ramp_rms_ratio;
+    cp.ramp_point_stride =
+        std::max<int>(1, static_cast<int>(cloud.size() / kRampTestSampledPoints));
     const auto ramp = [&](const Staircase& s) {
         if (s.direction != StairDirection::Ascending || s.steps.size() < 2 ||
             s.slope_rad > kRampTestMaxSlopeDeg * M_PI / 180.0 || !nearlyStraight(s))
