@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include "core/CylindricalRows.h"
 #include "core/FlightContinuation.h"
@@ -373,6 +375,9 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     // edges are a flight (it may add the edge it continues with). Returns the chain taken.
     // `may` is a point-free test of the uncorrected edges that `counts` needs to pass.
     const auto anyChain = [](const std::vector<LineSegment>&) { return true; };
+    // A chain's corrected edges (a pass over the cloud each) are kept for the next continuation
+    // asked of it: the same chains are asked up to three times.
+    std::map<std::pair<const void*, const void*>, std::vector<LineSegment>> corrected_chains;
     const auto continueRefused = [&](const std::vector<LineSegment>& from,
                                      const std::vector<int>& first,
                                      const std::vector<std::vector<int>>& ties, const auto& counts,
@@ -382,7 +387,13 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
             const std::vector<int>& chain = k == 0 ? first : ties[k - 1];
             std::vector<LineSegment> edges = edgesOf(from, chain);
             if (!mayContinue(edges, p) || !may(edges)) continue;
-            correct(edges);
+            const auto key = std::make_pair<const void*, const void*>(&from, &chain);
+            if (const auto it = corrected_chains.find(key); it != corrected_chains.end()) {
+                edges = it->second;
+            } else {
+                correct(edges);
+                corrected_chains.emplace(key, edges);
+            }
             if (counts(edges)) {
                 out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
                 return &chain;
