@@ -92,4 +92,26 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
     rows.row_begin.push_back(static_cast<int>(rows.x.size()));
 }
 
+namespace {
+bool sameParams(const CylindricalParams& a, const CylindricalParams& b) {
+    return a.z_lo == b.z_lo && a.z_hi == b.z_hi && a.row_height_m == b.row_height_m &&
+           a.azimuth_bins == b.azimuth_bins && a.skip_z_lo == b.skip_z_lo &&
+           a.skip_z_hi == b.skip_z_hi;
+}
+}  // namespace
+
+const CylindricalRows& CylindricalRowsCache::rows(const std::vector<TopViewCell>& cells,
+                                                  std::uint8_t flag,
+                                                  const CylindricalParams& params) {
+    for (std::size_t i = 0; i < used_; ++i)
+        if (entries_[i].flag == flag && sameParams(entries_[i].params, params))
+            return entries_[i].rows;
+    if (used_ == entries_.size()) entries_.emplace_back();
+    Entry& e = entries_[used_++];
+    e.flag = flag;
+    e.params = params;
+    buildCylindricalRows(cells, flag, params, e.rows);
+    return e.rows;
+}
+
 }  // namespace stairmap

@@ -35,4 +35,23 @@ struct CylindricalRows {
 void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
                           const CylindricalParams& params, CylindricalRows& rows);
 
+/// Arrays built from one set of cells, kept per (flag, params): a detector's later passes (taller
+/// rows, longer gaps) ask again for the arrays its first passes built. Valid while the cells are
+/// unchanged: clear() when they change (the arrays' memory is kept for the next ones).
+class CylindricalRowsCache {
+public:
+    const CylindricalRows& rows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
+                                const CylindricalParams& params);
+    void clear() { used_ = 0; }
+
+private:
+    struct Entry {
+        std::uint8_t flag = 0;
+        CylindricalParams params;
+        CylindricalRows rows;
+    };
+    std::vector<Entry> entries_;
+    std::size_t used_ = 0;
+};
+
 }  // namespace stairmap

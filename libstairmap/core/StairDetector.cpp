@@ -82,9 +82,15 @@ SegmentationParams segmentationParams(const DetectorParams& p) {
     return s;
 }
 
+/// The top view's nosing candidates, and the cylindrical arrays built from them so far.
+struct Candidates {
+    const std::vector<TopViewCell>& cells;
+    CylindricalRowsCache& arrays;
+};
+
 /// Lines of one kind of nosing (front drops for ascending, back drops for descending).
-std::vector<LineSegment> extractLines(const std::vector<TopViewCell>& cells, std::uint8_t flag,
-                                      double floor_z, const DetectorParams& p) {
+std::vector<LineSegment> extractLines(const Candidates& cand, std::uint8_t flag, double floor_z,
+                                      const DetectorParams& p) {
     CylindricalParams cp;
     cp.z_lo = floor_z - p.max_depth_below_floor_m;
     cp.z_hi = floor_z + p.max_height_above_floor_m;
@@ -92,9 +98,7 @@ std::vector<LineSegment> extractLines(const std::vector<TopViewCell>& cells, std
     cp.azimuth_bins = p.azimuth_bins;
     cp.skip_z_lo = floor_z - p.floor_tolerance_m;  // ground lines are not used by the search
     cp.skip_z_hi = floor_z + p.floor_tolerance_m;
-    thread_local CylindricalRows tl_rows;  // scratch re-used between calls
-    CylindricalRows& rows = tl_rows;
-    buildCylindricalRows(cells, flag, cp, rows);
+    const CylindricalRows& rows = cand.arrays.rows(cand.cells, flag, cp);
     std::vector<LineSegment> lines;
     segmentRows(rows, segmentationParams(p), lines);
     LineFusionParams fp;
@@ -314,12 +318,12 @@ bool descendsToViewEnd(const PointCloud& cloud, double floor_z, const DetectorPa
 }
 
 /// One direction's flights from the lines of `cells`, leaving out the lines on `found_before`.
-void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
+void detectDirection(const PointCloud& cloud, const Candidates& cand,
                      StairDirection dir, double floor_z, const DetectorParams& p,
                      const std::vector<Staircase>& found_before, std::vector<Staircase>& out,
                      DetectorDebug* debug, std::vector<LineSegment>& raw_lines) {
     const bool up = dir == StairDirection::Ascending;
-    std::vector<LineSegment> lines = extractLines(cells, up ? kFrontDrop : kBackDrop, floor_z, p);
+    std::vector<LineSegment> lines = extractLines(cand, up ? kFrontDrop : kBackDrop, floor_z, p);
     if (!found_before.empty())
         lines.erase(std::remove_if(lines.begin(), lines.end(),
                                    [&](const LineSegment& l) {
@@ -361,7 +365,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
     for (const auto& chain : chains) {
         std::vector<LineSegment> edges = edgesOf(lines, chain);
         correct(edges);
-        if (!up) prependFloorNosing(cells, floor_z, p, edges);
+        if (!up) prependFloorNosing(cand.cells, floor_z, p, edges);
         if (static_cast<int>(edges.size()) < p.min_steps &&
             (up || !impliesTopNosing(edges, floor_z, p))) {
             if (debug && debug->rejected.size() < DetectorDebug::kMaxRejected)
@@ -454,7 +458,7 @@ void detectDirection(const PointCloud& cloud, const std::vector<TopViewCell>& ce
         std::vector<LineSegment> edges = edgesOf(lines, refused);
         correct(edges);
         const std::size_t below_floor = edges.size();
-        prependFloorNosing(cells, floor_z, p, edges);
+        prependFloorNosing(cand.cells, floor_z, p, edges);
         if (edges.size() == below_floor + 1 && descendsToViewEnd(cloud, floor_z, p, edges)) {
             out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
             if (!used.empty())
@@ -590,7 +594,7 @@ FlightJoinParams joinParams(const DetectorParams& p) {
 /// Algorithm 1 both ways on the lines of `cells` (rows of p.row_height_m) off the flights in
 /// `found_before`, the detector's merges of its own chains, then the spirals. `user` are the
 /// parameters as given (p may have a raised split distance or other rows).
-std::vector<Staircase> findFlights(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
+std::vector<Staircase> findFlights(const PointCloud& cloud, const Candidates& cand,
                                    double floor_z, const DetectorParams& p,
                                    const DetectorParams& user,
                                    const std::vector<Staircase>& found_before,
@@ -598,10 +602,10 @@ std::vector<Staircase> findFlights(const PointCloud& cloud, const std::vector<To
     std::vector<Staircase> found;
     std::vector<LineSegment> front_drops, back_drops;  // real z, for the spiral search
     if (p.detect_ascending)
-        detectDirection(cloud, cells, StairDirection::Ascending, floor_z, p, found_before, found,
+        detectDirection(cloud, cand, StairDirection::Ascending, floor_z, p, found_before, found,
                         debug, front_drops);
     if (p.detect_descending)
-        detectDirection(cloud, cells, StairDirection::Descending, floor_z, p, found_before, found,
+        detectDirection(cloud, cand, StairDirection::Descending, floor_z, p, found_before, found,
                         debug, back_drops);
     mergeOverlappingFlights(found);  // Algorithm 2 on the detector's own chains
     joinContinuedFlights(found, joinParams(user));
@@ -613,7 +617,7 @@ std::vector<Staircase> findFlights(const PointCloud& cloud, const std::vector<To
 
 /// The tilted-ring pass (DetectorParams::tilted_ring_row_height_m): the search again with taller
 /// rows on the lines off the flights found; its flights that keep off those too are added.
-void addTiltedRingFlights(const PointCloud& cloud, const std::vector<TopViewCell>& cells,
+void addTiltedRingFlights(const PointCloud& cloud, const Candidates& cand,
                           double floor_z, const DetectorParams& p, const DetectorParams& user,
                           std::vector<Staircase>& found) {
     DetectorParams tall = p;
@@ -621,7 +625,7 @@ void addTiltedRingFlights(const PointCloud& cloud, const std::vector<TopViewCell
     // Condition 1 outright (without dropFlightsBelowARise's 2 cm of noise): a ramp beside a
     // pitched LiDAR, its slanted rings cut by the taller rows, reads as 0.099 m rises (check
     // r0165); the pass's flights on the three development sets read 0.11 m or more but one.
-    for (Staircase& s : findFlights(cloud, cells, floor_z, tall, user, found, nullptr))
+    for (Staircase& s : findFlights(cloud, cand, floor_z, tall, user, found, nullptr))
         if (!overlapsAnyFlight(s, found) && s.step_height >= user.min_step_height_m)
             found.push_back(std::move(s));
     // A flight the first pass found in part may go on beyond its footprint (dev2 r0008: its
@@ -735,11 +739,14 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     std::vector<TopViewCell>& cells = tl_cells;
     buildTopView(cloud_robot, tp, cells);
     if (debug) debug->candidates = cells;
+    thread_local CylindricalRowsCache tl_arrays;  // scratch re-used between calls
+    tl_arrays.clear();
+    const Candidates cand{cells, tl_arrays};
 
     const DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
-    result.staircases = findFlights(cloud_robot, cells, floor, p, params_, {}, debug);
+    result.staircases = findFlights(cloud_robot, cand, floor, p, params_, {}, debug);
     if (params_.tilted_ring_row_height_m > 0)
-        addTiltedRingFlights(cloud_robot, cells, floor, p, params_, result.staircases);
+        addTiltedRingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides
         if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius
