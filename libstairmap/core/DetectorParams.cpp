@@ -70,6 +70,10 @@ void DetectorParams::validate() const {
     requireRange(min_line_points, 2, 100000, "min_line_points");
     requireRange(min_line_length_m, 0.0, 10.0, "min_line_length_m");
     requireRange(max_point_gap_m, 1e-3, 10.0, "max_point_gap_m");
+    if (dashed_nosing_gap_m != 0.0) {
+        requireRange(dashed_nosing_gap_m, 1e-3, 10.0, "dashed_nosing_gap_m");
+        requireLess(max_point_gap_m, dashed_nosing_gap_m, "max_point_gap_m", "dashed_nosing_gap_m");
+    }
     requireRange(point_sigma_m, 1e-5, 1.0, "point_sigma_m");
     requireRange(merge_chi2, 0.0, 1e6, "merge_chi2");
     requireRange(vertical_merge_dz_m, 0.0, 1.0, "vertical_merge_dz_m");

@@ -59,6 +59,15 @@ struct DetectorParams {
     int min_line_points = 5;          ///< [-] N_min, fewest points of a line
     double min_line_length_m = 0.20;  ///< [m] shorter lines are dropped (debris, clutter)
     double max_point_gap_m = 0.20;    ///< [m] a row is cut where neighbours are farther apart
+    /// [m] the dashed-nosing pass: Algorithm 1 once more (rows of row_height_m, then of
+    /// tilted_ring_row_height_m), on the lines off the flights found, with rows cut only at gaps
+    /// longer than this. A pitched or far LiDAR's rings cross a nosing in dashes of a few columns
+    /// 0.3-0.5 m apart (dev r0126, an HDL-32 pitched 24 deg 6-10 m away: four cells every 0.45
+    /// m), each too short for a line at max_point_gap_m. Its flights need min_steps edges, regular
+    /// rises and runs, and must be no ramp at the short chains' bound (StairDetector.cpp,
+    /// addDashedNosingFlights); the spiral search is not asked. 0 = off; else above
+    /// max_point_gap_m.
+    double dashed_nosing_gap_m = 0.5;
     double point_sigma_m = 0.01;      ///< [m] std. dev. of a point for the weighted line fit
     double merge_chi2 = 9.21;         ///< [-] Mahalanobis gate to merge lines (chi2, 2 dof, 99 %)
     double vertical_merge_dz_m = 0.06;    ///< [m] lines of nearby rows closer in z are fused ...

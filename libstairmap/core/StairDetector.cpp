@@ -670,6 +670,22 @@ bool nearlyStraight(const Staircase& s) {
     });
 }
 
+/// Whether ascending flight `s`, shallow and nearly straight, has its points on one sloped surface
+/// (treadsRiseAlongTheRun asked with `max_rms_ratio`).
+bool isRampFlight(const PointCloud& cloud, const Staircase& s, double max_rms_ratio) {
+    if (s.direction != StairDirection::Ascending || s.steps.size() < 2 ||
+        s.slope_rad > kRampTestMaxSlopeDeg * M_PI / 180.0 || !nearlyStraight(s))
+        return false;
+    FlightContinuationParams cp;
+    cp.ramp_max_rms_ratio = max_rms_ratio;
+    cp.ramp_point_stride =
+        std::max<int>(1, static_cast<int>(cloud.size() / kRampTestSampledPoints));
+    std::vector<LineSegment> edges;
+    for (const StairEdge& e : s.steps)
+        edges.push_back(unseenNosing(e.start.head<2>(), e.end.head<2>(), e.start.z()));
+    return treadsRiseAlongTheRun(cloud, edges, cp);
+}
+
 /// Ascending flights whose points lie on one sloped surface (treadsRiseAlongTheRun, asked with
 /// p.max_ramp_rms_ratio) are a ramp's ring lines: a LiDAR's rings cross a ramp a "rise" apart and
 /// four or five of them chain like nosings (check4 r0150, a 14.8 deg ramp 4 m from a level
@@ -678,20 +694,55 @@ bool nearlyStraight(const Staircase& s) {
 void dropRampFlights(const PointCloud& cloud, const DetectorParams& p,
                      std::vector<Staircase>& flights) {
     if (p.max_ramp_rms_ratio <= 0) return;
-    FlightContinuationParams cp;
-    cp.ramp_max_rms_ratio = p.max_ramp_rms_ratio;
-    cp.ramp_point_stride =
-        std::max<int>(1, static_cast<int>(cloud.size() / kRampTestSampledPoints));
     const auto ramp = [&](const Staircase& s) {
-        if (s.direction != StairDirection::Ascending || s.steps.size() < 2 ||
-            s.slope_rad > kRampTestMaxSlopeDeg * M_PI / 180.0 || !nearlyStraight(s))
-            return false;
-        std::vector<LineSegment> edges;
-        for (const StairEdge& e : s.steps)
-            edges.push_back(unseenNosing(e.start.head<2>(), e.end.head<2>(), e.start.z()));
-        return treadsRiseAlongTheRun(cloud, edges, cp);
+        return isRampFlight(cloud, s, p.max_ramp_rms_ratio);
     };
     flights.erase(std::remove_if(flights.begin(), flights.end(), ramp), flights.end());
+}
+
+/// Whether flight `s` is a regular straight flight (isRegularStraightChain with the edges within
+/// kRampTestMaxTurnDeg of the last; descending flights in mirrored z about `floor_z`).
+bool isRegularFlight(const Staircase& s, double floor_z) {
+    std::vector<LineSegment> edges;
+    const bool up = s.direction == StairDirection::Ascending;
+    for (const StairEdge& e : s.steps)
+        edges.push_back(unseenNosing(e.start.head<2>(), e.end.head<2>(),
+                                     up ? e.start.z() : 2 * floor_z - e.start.z()));
+    FlightContinuationParams cp;
+    cp.max_turn_deg = kRampTestMaxTurnDeg;
+    return isRegularStraightChain(edges, cp);
+}
+
+/// The dashed-nosing pass (DetectorParams::dashed_nosing_gap_m): Algorithm 1 with rows cut only
+/// at long gaps, at both row heights, on the lines off the flights found. A flight it finds is
+/// added when it keeps off those flights and, its lines being looser, when it has min_steps edges
+/// or more (a descending chain of min_steps - 1 and the floor's edge is not enough here: dashes
+/// of a pitched VLP-16's rings joined across a flight's side, dev3 r0270), is a regular straight
+/// flight (chains through a spiral's levels and balusters read rises 10 cm off, dev3 r0014; on
+/// the check sets a chain over every other level of an open-riser flight, check3 r0291) and is
+/// no ramp at the short chains' bound (FlightContinuationParams::ramp_max_rms_ratio 0.8: its
+/// flights on the dev sets read 1.13-2.2, a 14 deg ramp beside a pitched VLP-16 0.70, check2
+/// r0234). The spiral search is not asked (user's detect_ascending off: the first passes had
+/// their lines).
+void addDashedNosingFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
+                            const DetectorParams& p, const DetectorParams& user,
+                            std::vector<Staircase>& found) {
+    if (user.dashed_nosing_gap_m <= 0) return;
+    DetectorParams dashed = p;
+    dashed.max_point_gap_m = user.dashed_nosing_gap_m;
+    DetectorParams no_spirals = user;
+    no_spirals.detect_ascending = false;
+    const double ramp_ratio = FlightContinuationParams{}.ramp_max_rms_ratio;
+    for (const double rows : {user.row_height_m, user.tilted_ring_row_height_m}) {
+        if (rows <= 0) continue;
+        dashed.row_height_m = rows;
+        for (Staircase& s : findFlights(cloud, cand, floor_z, dashed, no_spirals, found, nullptr))
+            if (static_cast<int>(s.steps.size()) >= user.min_steps &&
+                s.step_height >= user.min_step_height_m && !overlapsAnyFlight(s, found) &&
+                isRegularFlight(s, floor_z) && !isRampFlight(cloud, s, ramp_ratio))
+                found.push_back(std::move(s));
+        joinContinuedFlights(found, joinParams(user));
+    }
 }
 
 /// [m] the column is looked for this far beyond the nosings' inner ends, and this far above the
@@ -747,6 +798,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     result.staircases = findFlights(cloud_robot, cand, floor, p, params_, {}, debug);
     if (params_.tilted_ring_row_height_m > 0)
         addTiltedRingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
+    addDashedNosingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides
         if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius

@@ -194,8 +194,36 @@ TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
     };
     DetectorParams off;
     off.tilted_ring_row_height_m = 0.0;
+    off.dashed_nosing_gap_m = 0.0;  // its rows of the first pass's height find it too
     EXPECT_EQ(onTruth(off), 0);
     EXPECT_EQ(onTruth(DetectorParams{}), 1);
+}
+
+// Nosings seen in dashes: the rings of LiDARs 3-10 m away cross each nosing in pieces of a few
+// top-view columns 0.3-0.5 m apart (an HDL-32 pitched 24 deg, dev r0126: four cells every 0.45 m),
+// each too short for a line at max_point_gap_m. The dashed-nosing pass (rows cut only at gaps
+// over 0.5 m) finds them: open-riser flights seen by pitched HDL-32s (dev r0126 at 6 m, dev3 r0078
+// at 2.8 m) and a level VLP-16 (dev2 r0106), and a descending flight below a level HDL-32 (dev3
+// r0166).
+INSTANTIATE_TEST_SUITE_P(
+    DashedNosings, MissedBefore,
+    testing::Values(SceneCase{1001, 126, 0.01, 0.02, false, "HDL-32 pitched 24 deg at 6 m"},
+                    SceneCase{4004, 78, 0.01, 0.02, false, "HDL-32 pitched 16 deg at 2.8 m"},
+                    SceneCase{3003, 106, 0.01, 0.02, false, "level VLP-16 at 2.9 m"},
+                    SceneCase{4004, 166, 0.01, 0.02, false, "descending, level HDL-32"}));
+
+TEST(DashedNosingPass, IsWhatFindsFlightsSeenInDashes) {
+    for (const auto& [seed, index] : {std::pair{1001, 126}, {4004, 78}, {3003, 106}, {4004, 166}}) {
+        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
+        ASSERT_FALSE(scene.truth.staircases.empty());
+        DetectorParams off;
+        off.dashed_nosing_gap_m = 0.0;
+        int on_truth = 0;
+        for (const Staircase& s :
+             StairDetector(off).detect(scene.cloud, scene.truth.observer_floor_z).staircases)
+            on_truth += test::reportsFlight(s, scene.truth.staircases.front());
+        EXPECT_EQ(on_truth, 0) << "seed " << seed << " scene " << index;
+    }
 }
 
 /// A negative scene of the benchmark: the detector reports nothing in it.
