@@ -22,6 +22,7 @@
 #include "core/RiserHits.h"
 #include "core/RowSegmentation.h"
 #include "core/SpiralColumn.h"
+#include "core/SpiralPieces.h"
 #include "core/SpiralSearch.h"
 #include "core/StairPairExplain.h"
 #include "core/StairSearch.h"
@@ -799,6 +800,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (params_.tilted_ring_row_height_m > 0)
         addTiltedRingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     addDashedNosingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
+    joinSpiralPieces(result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides
         if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius

@@ -212,6 +212,16 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{3003, 106, 0.01, 0.02, false, "level VLP-16 at 2.9 m"},
                     SceneCase{4004, 166, 0.01, 0.02, false, "descending, level HDL-32"}));
 
+// Spirals found as two turning chains about one axis, the upper continuing the lower's helix: an
+// elevation map 2.4 m from a 12-level spiral of 0.108 m rises (levels 0-4 and 5-10) and an OS1-64
+// pitched down 19 deg 6.6 m from a 16-level one (levels 0-4 and 5-14), both of the check set of
+// seed 7007 (check4 r0047, r0292). Each was reported twice (a false positive) until the pieces are
+// joined (SpiralPieces).
+INSTANTIATE_TEST_SUITE_P(
+    SpiralPiecesJoined, MissedBefore,
+    testing::Values(SceneCase{7007, 47, 0.01, 0.02, true, "elevation map, 2 pieces"},
+                    SceneCase{7007, 292, 0.01, 0.02, true, "pitched OS1-64, 2 pieces"}));
+
 TEST(DashedNosingPass, IsWhatFindsFlightsSeenInDashes) {
     for (const auto& [seed, index] : {std::pair{1001, 126}, {4004, 78}, {3003, 106}, {4004, 166}}) {
         const sim::RandomCloud scene = test::benchmarkScene(seed, index);
