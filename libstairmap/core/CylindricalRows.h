@@ -5,6 +5,7 @@
 // nearest point is a point of the nearest edge, not of the surface behind it.
 
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "core/TopView.h"
@@ -40,9 +41,11 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
 /// unchanged: clear() when they change (the arrays' memory is kept for the next ones).
 class CylindricalRowsCache {
 public:
-    const CylindricalRows& rows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
-                                const CylindricalParams& params);
-    void clear() { used_ = 0; }
+  /// The array of `cells` for (flag, params), built on first request; the reference stays valid
+  /// until clear() (entries live in a deque: later requests never move them).
+  const CylindricalRows& rows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
+                              const CylindricalParams& params);
+  void clear() { used_ = 0; }
 
 private:
     struct Entry {
@@ -50,7 +53,7 @@ private:
         CylindricalParams params;
         CylindricalRows rows;
     };
-    std::vector<Entry> entries_;
+    std::deque<Entry> entries_;
     std::size_t used_ = 0;
 };
 

@@ -671,6 +671,14 @@ bool nearlyStraight(const Staircase& s) {
     });
 }
 
+/// The edges of flight `s` as lines (unseenNosing: geometry only), for the chain tests.
+std::vector<LineSegment> edgeLines(const Staircase& s) {
+    std::vector<LineSegment> edges;
+    for (const StairEdge& e : s.steps)
+        edges.push_back(unseenNosing(e.start.head<2>(), e.end.head<2>(), e.start.z()));
+    return edges;
+}
+
 /// Whether ascending flight `s`, shallow and nearly straight, has its points on one sloped surface
 /// (treadsRiseAlongTheRun asked with `max_rms_ratio`).
 bool isRampFlight(const PointCloud& cloud, const Staircase& s, double max_rms_ratio) {
@@ -681,10 +689,7 @@ bool isRampFlight(const PointCloud& cloud, const Staircase& s, double max_rms_ra
     cp.ramp_max_rms_ratio = max_rms_ratio;
     cp.ramp_point_stride =
         std::max<int>(1, static_cast<int>(cloud.size() / kRampTestSampledPoints));
-    std::vector<LineSegment> edges;
-    for (const StairEdge& e : s.steps)
-        edges.push_back(unseenNosing(e.start.head<2>(), e.end.head<2>(), e.start.z()));
-    return treadsRiseAlongTheRun(cloud, edges, cp);
+    return treadsRiseAlongTheRun(cloud, edgeLines(s), cp);
 }
 
 /// Ascending flights whose points lie on one sloped surface (treadsRiseAlongTheRun, asked with
@@ -704,11 +709,9 @@ void dropRampFlights(const PointCloud& cloud, const DetectorParams& p,
 /// Whether flight `s` is a regular straight flight (isRegularStraightChain with the edges within
 /// kRampTestMaxTurnDeg of the last; descending flights in mirrored z about `floor_z`).
 bool isRegularFlight(const Staircase& s, double floor_z) {
-    std::vector<LineSegment> edges;
-    const bool up = s.direction == StairDirection::Ascending;
-    for (const StairEdge& e : s.steps)
-        edges.push_back(unseenNosing(e.start.head<2>(), e.end.head<2>(),
-                                     up ? e.start.z() : 2 * floor_z - e.start.z()));
+    std::vector<LineSegment> edges = edgeLines(s);
+    if (s.direction == StairDirection::Descending)
+        for (LineSegment& e : edges) e.z = 2 * floor_z - e.z;  // ascending in mirrored z
     FlightContinuationParams cp;
     cp.max_turn_deg = kRampTestMaxTurnDeg;
     return isRegularStraightChain(edges, cp);
