@@ -182,21 +182,23 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{4004, 71, 0.01, 0.02, true, "level HDL-32 at 6.3 m"},
                     SceneCase{4004, 37, 0.01, 0.02, true, "depth camera, view ends at a riser"}));
 
+/// How many of the flights detected with `params` report the scene's first truth flight.
+int flightsOnTruth(const sim::RandomCloud& scene, const DetectorParams& params) {
+    int n = 0;
+    for (const Staircase& s :
+         StairDetector(params).detect(scene.cloud, scene.truth.observer_floor_z).staircases)
+        n += test::reportsFlight(s, scene.truth.staircases.front());
+    return n;
+}
+
 TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
     const sim::RandomCloud scene = test::benchmarkScene(1001, 175);
     ASSERT_EQ(scene.truth.staircases.size(), 1u);
-    const auto onTruth = [&](const DetectorParams& p) {
-        int n = 0;
-        for (const Staircase& s :
-             StairDetector(p).detect(scene.cloud, scene.truth.observer_floor_z).staircases)
-            n += test::reportsFlight(s, scene.truth.staircases.front());
-        return n;
-    };
     DetectorParams off;
     off.tilted_ring_row_height_m = 0.0;
     off.dashed_nosing_gap_m = 0.0;  // its rows of the first pass's height find it too
-    EXPECT_EQ(onTruth(off), 0);
-    EXPECT_EQ(onTruth(DetectorParams{}), 1);
+    EXPECT_EQ(flightsOnTruth(scene, off), 0);
+    EXPECT_EQ(flightsOnTruth(scene, DetectorParams{}), 1);
 }
 
 // Nosings seen in dashes: the rings of LiDARs 3-10 m away cross each nosing in pieces of a few
@@ -228,11 +230,7 @@ TEST(DashedNosingPass, IsWhatFindsFlightsSeenInDashes) {
         ASSERT_FALSE(scene.truth.staircases.empty());
         DetectorParams off;
         off.dashed_nosing_gap_m = 0.0;
-        int on_truth = 0;
-        for (const Staircase& s :
-             StairDetector(off).detect(scene.cloud, scene.truth.observer_floor_z).staircases)
-            on_truth += test::reportsFlight(s, scene.truth.staircases.front());
-        EXPECT_EQ(on_truth, 0) << "seed " << seed << " scene " << index;
+        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
     }
 }
 
