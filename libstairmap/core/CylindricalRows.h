@@ -41,11 +41,11 @@ void buildCylindricalRows(const std::vector<TopViewCell>& cells, std::uint8_t fl
 /// unchanged: clear() when they change (the arrays' memory is kept for the next ones).
 class CylindricalRowsCache {
 public:
-  /// The array of `cells` for (flag, params), built on first request; the reference stays valid
-  /// until clear() (entries live in a deque: later requests never move them).
-  const CylindricalRows& rows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
-                              const CylindricalParams& params);
-  void clear() { used_ = 0; }
+    /// The array of `cells` for (flag, params), built on first request; the reference stays valid
+    /// until clear() (entries live in a deque: later requests never move them).
+    const CylindricalRows& rows(const std::vector<TopViewCell>& cells, std::uint8_t flag,
+                                const CylindricalParams& params);
+    void clear() { used_ = 0; }
 
 private:
     struct Entry {
