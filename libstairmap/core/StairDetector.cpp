@@ -522,7 +522,12 @@ void detectDirection(const PointCloud& cloud, const Candidates& cand,
             if (treadsSeenLevel(cloud, edges)) continue;  // deep level treads: no step between
             if (!putBackEveryOtherNosing(lines, edges)) continue;
             correct(edges);
-            out.push_back(makeStaircase(edges, dir, 0.5 * p.leaf_size_m));
+            Staircase flight = makeStaircase(edges, dir, 0.5 * p.leaf_size_m);
+            // On a flight found already, such a chain is that flight's lines read at half its
+            // rise (a riser hit or side-wall ring between its nosings: dev3 r0016, 0.20 m rises
+            // read 0.123 m); its put-back steps would make it the longer one and replace it.
+            if (overlapsAnyFlight(flight, out)) continue;
+            out.push_back(std::move(flight));
         }
     }
     if (debug) recordDirection(lines, used, refused, dir, floor_z, p, *debug);

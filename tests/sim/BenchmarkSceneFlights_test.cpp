@@ -82,6 +82,14 @@ INSTANTIATE_TEST_SUITE_P(RingAliasedFlights, MissedBefore,
                          testing::Values(SceneCase{1001, 9, 0.01, 0.03, false,
                                                    "level VLP-16 at 5.9 m, every other nosing"}));
 
+// A flight found by Algorithm 1 whose lines the ring-aliased search chains again, at half its rise
+// (0.20 m rises, 0.36 m runs: pairs two "steps" apart within that search's bounds) through a line
+// between its nosings: with every other nosing put back the chain had more steps and replaced the
+// flight, read at 0.123 m rises (dev3 r0016, a level HDL-32 4 m from a walled hollow flight).
+INSTANTIATE_TEST_SUITE_P(RingAliasedChainOnAFoundFlight, MissedBefore,
+                         testing::Values(SceneCase{4004, 16, 0.01, 0.03, true,
+                                                   "level HDL-32, 0.20 m rises"}));
+
 // Far level VLP-16s see only riser hits, every step at about the same phase of the rings: the
 // chains read 10-18 cm low (a miss and a false positive each) until the surface in front of the
 // first riser pins their line (core/StartSurface): the floor seen in front (dev 258, 5 m), a
