@@ -123,8 +123,9 @@ struct DetectorParams {
     /// in [2 min_step_height_m, this] and runs in [2 min_step_depth_m, 2 max_step_depth_m], whose
     /// treads are not seen level (a real deep tread is flat, an aliased pair's holds a riser) and
     /// with no line where a skipped nosing would lie (a dense noisy view's chain that merely
-    /// stepped over lines), is the flight with every other nosing put back halfway. 0.26 (0.30 with
-    /// the sparse-mode tolerance) keeps bleachers' 0.36-0.50 m tiers out. 0 = off.
+    /// stepped over lines) and off the flights found, is the flight with every other nosing put
+    /// back halfway. 0.26 (0.30 with the sparse-mode tolerance) keeps bleachers' 0.36-0.50 m tiers
+    /// out. 0 = off.
     double max_double_step_rise_m = 0.26;
     /// [deg] condition 4, consecutive edges parallel within this. The paper uses 10; a spiral's
     /// wedge treads turn run / mid radius per step: 15-25 deg on wide spirals, up to 40 deg and more
