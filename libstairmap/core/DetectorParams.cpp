@@ -74,6 +74,10 @@ void DetectorParams::validate() const {
         requireRange(dashed_nosing_gap_m, 1e-3, 10.0, "dashed_nosing_gap_m");
         requireLess(max_point_gap_m, dashed_nosing_gap_m, "max_point_gap_m", "dashed_nosing_gap_m");
     }
+    if (sparse_line_points != 0) {
+        requireRange(sparse_line_points, 2, 100000, "sparse_line_points");
+        requireLess(sparse_line_points, min_line_points, "sparse_line_points", "min_line_points");
+    }
     requireRange(point_sigma_m, 1e-5, 1.0, "point_sigma_m");
     requireRange(merge_chi2, 0.0, 1e6, "merge_chi2");
     requireRange(vertical_merge_dz_m, 0.0, 1.0, "vertical_merge_dz_m");

@@ -68,6 +68,15 @@ struct DetectorParams {
     /// addDashedNosingFlights); the spiral search is not asked. 0 = off; else above
     /// max_point_gap_m.
     double dashed_nosing_gap_m = 0.5;
+    /// [-] the sparse-line pass: Algorithm 1 once more, on the lines off the flights found, with
+    /// lines of this many points (fewer than min_line_points). Far LiDARs' rings and depth
+    /// cameras' noisy rows leave nosings with a line of four top-view columns where the first
+    /// pass needs five (dev r0114, a level VLP-16 7.9 m from an open-riser flight; dev3 r0090, a
+    /// spiral 0.7 m in front of a VLP-16 pitched down 16 deg). Its flights need min_steps edges,
+    /// condition 1's rise and must be no ramp at the short chains' bound; unlike the dashed pass's
+    /// they may turn (spirals chained step by step). The spiral search is not asked. 0 = off;
+    /// else 2 .. min_line_points - 1.
+    int sparse_line_points = 4;
     double point_sigma_m = 0.01;      ///< [m] std. dev. of a point for the weighted line fit
     double merge_chi2 = 9.21;         ///< [-] Mahalanobis gate to merge lines (chi2, 2 dof, 99 %)
     double vertical_merge_dz_m = 0.06;    ///< [m] lines of nearby rows closer in z are fused ...

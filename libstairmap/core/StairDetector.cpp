@@ -754,6 +754,31 @@ void addDashedNosingFlights(const PointCloud& cloud, const Candidates& cand, dou
     }
 }
 
+/// The sparse-line pass (DetectorParams::sparse_line_points): Algorithm 1 with lines of fewer
+/// points, on the lines off the flights found. A flight it finds is added when it keeps off those
+/// flights, has min_steps edges or more (as the dashed pass: a descending chain of min_steps - 1
+/// and the floor's edge is not enough for looser lines), condition 1's rise, and is no ramp at the
+/// short chains' bound. It may turn: the spirals it adds on the development sets are chained
+/// step by step (dev2 r0147, dev3 r0090, r0267; asking for a regular straight flight, as the
+/// dashed pass does, kept two of the seven flights it finds there and none of its spirals). The
+/// spiral search is not asked (the first pass had its lines).
+void addSparseLineFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
+                          const DetectorParams& p, const DetectorParams& user,
+                          std::vector<Staircase>& found) {
+    if (user.sparse_line_points <= 0) return;
+    DetectorParams sparse = p;
+    sparse.min_line_points = user.sparse_line_points;
+    DetectorParams no_spirals = user;
+    no_spirals.detect_ascending = false;
+    const double ramp_ratio = FlightContinuationParams{}.ramp_max_rms_ratio;
+    for (Staircase& s : findFlights(cloud, cand, floor_z, sparse, no_spirals, found, nullptr))
+        if (static_cast<int>(s.steps.size()) >= user.min_steps &&
+            s.step_height >= user.min_step_height_m && !overlapsAnyFlight(s, found) &&
+            !isRampFlight(cloud, s, ramp_ratio))
+            found.push_back(std::move(s));
+    joinContinuedFlights(found, joinParams(user));
+}
+
 /// [m] the column is looked for this far beyond the nosings' inner ends, and this far above the
 /// highest nosing (the column's top above the last tread) and kColumnBelow below the lowest
 constexpr double kColumnReach = 0.10, kColumnAbove = 0.30, kColumnBelow = 0.05;
@@ -808,6 +833,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (params_.tilted_ring_row_height_m > 0)
         addTiltedRingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     addDashedNosingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
+    addSparseLineFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     joinSpiralPieces(result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides

@@ -110,6 +110,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadValue{"dashed_nosing_gap_m",  // gaps no longer than the first pass's
                  [](DetectorParams& p) { p.dashed_nosing_gap_m = 0.15; }},
         BadValue{"dashed_nosing_gap_m", [](DetectorParams& p) { p.dashed_nosing_gap_m = -1; }},
+        BadValue{"sparse_line_points",  // no fewer points than the first pass's lines
+                 [](DetectorParams& p) { p.sparse_line_points = 5; }},
+        BadValue{"sparse_line_points", [](DetectorParams& p) { p.sparse_line_points = 1; }},
+        BadValue{"sparse_line_points", [](DetectorParams& p) { p.sparse_line_points = -1; }},
         // Top-view grid over the memory budget (the far-extent case of issue 8).
         BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},
         BadValue{"max_range_m",

@@ -205,6 +205,7 @@ TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
     DetectorParams off;
     off.tilted_ring_row_height_m = 0.0;
     off.dashed_nosing_gap_m = 0.0;  // its rows of the first pass's height find it too
+    off.sparse_line_points = 0;     // and so do lines of four points
     EXPECT_EQ(flightsOnTruth(scene, off), 0);
     EXPECT_EQ(flightsOnTruth(scene, DetectorParams{}), 1);
 }
@@ -238,6 +239,26 @@ TEST(DashedNosingPass, IsWhatFindsFlightsSeenInDashes) {
         ASSERT_FALSE(scene.truth.staircases.empty());
         DetectorParams off;
         off.dashed_nosing_gap_m = 0.0;
+        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
+    }
+}
+
+// Nosings left with lines of four top-view columns, one short of min_line_points: an open-riser
+// flight 7.9 m from a level VLP-16 (dev r0114, its rise read 1.6 cm low), spirals chained step by
+// step 5.3 m from a level OS0-128 (dev2 r0147) and 0.7 m in front of a VLP-16 pitched down 16 deg
+// (dev3 r0090). The sparse-line pass (lines of four points, off the flights found) finds them.
+INSTANTIATE_TEST_SUITE_P(
+    SparseLines, MissedBefore,
+    testing::Values(SceneCase{1001, 114, 0.02, 0.02, false, "level VLP-16 at 7.9 m, open risers"},
+                    SceneCase{3003, 147, 0.01, 0.02, false, "level OS0-128 at 5.3 m, spiral"},
+                    SceneCase{4004, 90, 0.01, 0.02, false, "pitched VLP-16 at 0.7 m, spiral"}));
+
+TEST(SparseLinePass, IsWhatFindsFlightsOfFourPointLines) {
+    for (const auto& [seed, index] : {std::pair{1001, 114}, {3003, 147}, {4004, 90}}) {
+        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
+        ASSERT_FALSE(scene.truth.staircases.empty());
+        DetectorParams off;
+        off.sparse_line_points = 0;
         EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
     }
 }

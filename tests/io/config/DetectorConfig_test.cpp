@@ -86,6 +86,7 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_EQ(c.params.continue_by_next_riser, d.continue_by_next_riser);
     EXPECT_DOUBLE_EQ(c.params.max_ramp_rms_ratio, d.max_ramp_rms_ratio);
     EXPECT_DOUBLE_EQ(c.params.dashed_nosing_gap_m, d.dashed_nosing_gap_m);
+    EXPECT_EQ(c.params.sparse_line_points, d.sparse_line_points);
     ASSERT_TRUE(c.robot_height_m.has_value());
     EXPECT_GT(*c.robot_height_m, 0.0);
 }
