@@ -20,6 +20,7 @@
 #include "core/OverlappingFlights.h"
 #include "core/RayClearance.h"
 #include "core/RiserHits.h"
+#include "core/RowLinesCache.h"
 #include "core/RowSegmentation.h"
 #include "core/SpiralColumn.h"
 #include "core/SpiralPieces.h"
@@ -87,6 +88,7 @@ SegmentationParams segmentationParams(const DetectorParams& p) {
 struct Candidates {
     const std::vector<TopViewCell>& cells;
     CylindricalRowsCache& arrays;
+    RowLinesCache& lines;  ///< segmentations of `arrays`, shared by the passes
 };
 
 /// Lines of one kind of nosing (front drops for ascending, back drops for descending).
@@ -101,7 +103,9 @@ std::vector<LineSegment> extractLines(const Candidates& cand, std::uint8_t flag,
     cp.skip_z_hi = floor_z + p.floor_tolerance_m;
     const CylindricalRows& rows = cand.arrays.rows(cand.cells, flag, cp);
     std::vector<LineSegment> lines;
-    segmentRows(rows, segmentationParams(p), lines);
+    // Segmented once for the sparse-line pass's fewer points, which asks for the same rows.
+    const int fewest_points = p.sparse_line_points > 0 ? p.sparse_line_points : p.min_line_points;
+    cand.lines.lines(rows, segmentationParams(p), fewest_points, lines);
     LineFusionParams fp;
     fp.max_dz_m = p.vertical_merge_dz_m;
     fp.max_distance_m = p.vertical_merge_dist_m;
@@ -826,7 +830,9 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (debug) debug->candidates = cells;
     thread_local CylindricalRowsCache tl_arrays;  // scratch re-used between calls
     tl_arrays.clear();
-    const Candidates cand{cells, tl_arrays};
+    thread_local RowLinesCache tl_lines;  // scratch re-used between calls
+    tl_lines.clear();
+    const Candidates cand{cells, tl_arrays, tl_lines};
 
     const DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
     result.staircases = findFlights(cloud_robot, cand, floor, p, params_, {}, debug);
