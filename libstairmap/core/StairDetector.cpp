@@ -726,61 +726,59 @@ bool isRegularFlight(const Staircase& s, double floor_z) {
     return isRegularStraightChain(edges, cp);
 }
 
-/// The dashed-nosing pass (DetectorParams::dashed_nosing_gap_m): Algorithm 1 with rows cut only
-/// at long gaps, at both row heights, on the lines off the flights found. A flight it finds is
-/// added when it keeps off those flights and, its lines being looser, when it has min_steps edges
-/// or more (a descending chain of min_steps - 1 and the floor's edge is not enough here: dashes
-/// of a pitched VLP-16's rings joined across a flight's side, dev3 r0270), is a regular straight
-/// flight (chains through a spiral's levels and balusters read rises 10 cm off, dev3 r0014; on
-/// the check sets a chain over every other level of an open-riser flight, check3 r0291) and is
-/// no ramp at the short chains' bound (FlightContinuationParams::ramp_max_rms_ratio 0.8: its
-/// flights on the dev sets read 1.13-2.2, a 14 deg ramp beside a pitched VLP-16 0.70, check2
-/// r0234). The spiral search is not asked (user's detect_ascending off: the first passes had
+/// A pass of looser lines (`loose`: the dashed-nosing and sparse-line passes): Algorithm 1 on the
+/// lines off the flights found, its flights added when they keep off those, have min_steps edges
+/// or more (a descending chain of min_steps - 1 and the floor's edge is not enough for looser
+/// lines: dashes of a pitched VLP-16's rings joined across a flight's side, dev3 r0270),
+/// condition 1's rise, are no ramp at the short chains' bound (FlightContinuationParams::
+/// ramp_max_rms_ratio 0.8: the dashed pass's flights on the dev sets read 1.13-2.2, a 14 deg ramp
+/// beside a pitched VLP-16 0.70, check2 r0234) and, when `straight_only`, a regular straight
+/// flight. The spiral search is not asked (user's detect_ascending off: the first passes had
 /// their lines).
+void addLooseFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
+                     const DetectorParams& loose, const DetectorParams& user, bool straight_only,
+                     std::vector<Staircase>& found) {
+    DetectorParams no_spirals = user;
+    no_spirals.detect_ascending = false;
+    const double ramp_ratio = FlightContinuationParams{}.ramp_max_rms_ratio;
+    for (Staircase& s : findFlights(cloud, cand, floor_z, loose, no_spirals, found, nullptr))
+        if (static_cast<int>(s.steps.size()) >= user.min_steps &&
+            s.step_height >= user.min_step_height_m && !overlapsAnyFlight(s, found) &&
+            (!straight_only || isRegularFlight(s, floor_z)) && !isRampFlight(cloud, s, ramp_ratio))
+            found.push_back(std::move(s));
+    joinContinuedFlights(found, joinParams(user));
+}
+
+/// The dashed-nosing pass (DetectorParams::dashed_nosing_gap_m): Algorithm 1 with rows cut only
+/// at long gaps, at both row heights, its flights those of a pass of looser lines that are
+/// regular straight flights (chains through a spiral's levels and balusters read rises 10 cm off,
+/// dev3 r0014; on the check sets a chain over every other level of an open-riser flight, check3
+/// r0291).
 void addDashedNosingFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
                             const DetectorParams& p, const DetectorParams& user,
                             std::vector<Staircase>& found) {
     if (user.dashed_nosing_gap_m <= 0) return;
     DetectorParams dashed = p;
     dashed.max_point_gap_m = user.dashed_nosing_gap_m;
-    DetectorParams no_spirals = user;
-    no_spirals.detect_ascending = false;
-    const double ramp_ratio = FlightContinuationParams{}.ramp_max_rms_ratio;
     for (const double rows : {user.row_height_m, user.tilted_ring_row_height_m}) {
         if (rows <= 0) continue;
         dashed.row_height_m = rows;
-        for (Staircase& s : findFlights(cloud, cand, floor_z, dashed, no_spirals, found, nullptr))
-            if (static_cast<int>(s.steps.size()) >= user.min_steps &&
-                s.step_height >= user.min_step_height_m && !overlapsAnyFlight(s, found) &&
-                isRegularFlight(s, floor_z) && !isRampFlight(cloud, s, ramp_ratio))
-                found.push_back(std::move(s));
-        joinContinuedFlights(found, joinParams(user));
+        addLooseFlights(cloud, cand, floor_z, dashed, user, /*straight_only=*/true, found);
     }
 }
 
 /// The sparse-line pass (DetectorParams::sparse_line_points): Algorithm 1 with lines of fewer
-/// points, on the lines off the flights found. A flight it finds is added when it keeps off those
-/// flights, has min_steps edges or more (as the dashed pass: a descending chain of min_steps - 1
-/// and the floor's edge is not enough for looser lines), condition 1's rise, and is no ramp at the
-/// short chains' bound. It may turn: the spirals it adds on the development sets are chained
-/// step by step (dev2 r0147, dev3 r0090, r0267; asking for a regular straight flight, as the
-/// dashed pass does, kept two of the seven flights it finds there and none of its spirals). The
-/// spiral search is not asked (the first pass had its lines).
+/// points, its flights those of a pass of looser lines that may turn: the spirals it adds on the
+/// development sets are chained step by step (dev2 r0147, dev3 r0090, r0267; asking for a regular
+/// straight flight, as the dashed pass does, kept two of the seven flights it finds there and none
+/// of its spirals).
 void addSparseLineFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
                           const DetectorParams& p, const DetectorParams& user,
                           std::vector<Staircase>& found) {
     if (user.sparse_line_points <= 0) return;
     DetectorParams sparse = p;
     sparse.min_line_points = user.sparse_line_points;
-    DetectorParams no_spirals = user;
-    no_spirals.detect_ascending = false;
-    const double ramp_ratio = FlightContinuationParams{}.ramp_max_rms_ratio;
-    for (Staircase& s : findFlights(cloud, cand, floor_z, sparse, no_spirals, found, nullptr))
-        if (static_cast<int>(s.steps.size()) >= user.min_steps &&
-            s.step_height >= user.min_step_height_m && !overlapsAnyFlight(s, found) &&
-            !isRampFlight(cloud, s, ramp_ratio))
-            found.push_back(std::move(s));
-    joinContinuedFlights(found, joinParams(user));
+    addLooseFlights(cloud, cand, floor_z, sparse, user, /*straight_only=*/false, found);
 }
 
 /// [m] the column is looked for this far beyond the nosings' inner ends, and this far above the
