@@ -11,6 +11,8 @@
 
 namespace stairmap {
 
+/// (RowLinesCache shares a segmentation between requests equal in every field but
+/// min_line_points: a field added here must be compared there, in sameButPoints.)
 struct SegmentationParams {
     double split_distance_m = 0.03;   ///< [m] d_p
     int min_line_points = 5;          ///< [-] N_min
