@@ -632,7 +632,7 @@ void addTiltedRingFlights(const PointCloud& cloud, const Candidates& cand,
                           std::vector<Staircase>& found) {
     DetectorParams tall = p;
     tall.row_height_m = user.tilted_ring_row_height_m;
-    // Condition 1 outright (without dropFlightsBelowARise's 2 cm of noise): a ramp beside a
+    // Condition 1 outright (without dropFlightsOutsideTheRises's 2 cm of noise): a ramp beside a
     // pitched LiDAR, its slanted rings cut by the taller rows, reads as 0.099 m rises (check
     // r0165); the pass's flights on the three development sets read 0.11 m or more but one.
     for (Staircase& s : findFlights(cloud, cand, floor_z, tall, user, found, nullptr))
@@ -647,11 +647,16 @@ void addTiltedRingFlights(const PointCloud& cloud, const Candidates& cand,
 /// hits; once corrected, a flight's rise is measured over all its steps, and one still below
 /// condition 1 (less kFlightRiseNoise) is no stair: a 14 deg ramp's ring hits read as a flight of
 /// 0.078 m rises (dev3 r0265, a negative). Real flights of 0.10-0.11 m rises read 0.096-0.107 m.
-void dropFlightsBelowARise(const DetectorParams& p, std::vector<Staircase>& flights) {
+/// Likewise above condition 1 (plus kFlightRiseNoise): the tolerance lets bleachers' 0.375 m tiers
+/// seen through a pitched LiDAR's slanted rings chain into a flight reading 0.356 m rises
+/// (negatives set 5005, r0687); no found flight on the dev sets reads above 0.32 m.
+void dropFlightsOutsideTheRises(const DetectorParams& p, std::vector<Staircase>& flights) {
     const double min_rise = p.min_step_height_m - kFlightRiseNoise;
-    flights.erase(std::remove_if(flights.begin(), flights.end(),
-                                 [&](const Staircase& s) { return s.step_height < min_rise; }),
-                  flights.end());
+    const double max_rise = p.max_step_height_m + kFlightRiseNoise;
+    const auto outside = [&](const Staircase& s) {
+        return s.step_height < min_rise || s.step_height > max_rise;
+    };
+    flights.erase(std::remove_if(flights.begin(), flights.end(), outside), flights.end());
 }
 
 /// [deg] a flight whose edges all lie within this of its last edge's direction is straight enough
@@ -853,7 +858,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     // pieces (a far VLP-16's, dev2 r0070; a depth camera's scattered ones, dev2 r0031) lie at the
     // same levels, their found edges side by side, but their measured treads overlap.
     mergeOverlappingFlights(result.staircases);
-    dropFlightsBelowARise(params_, result.staircases);
+    dropFlightsOutsideTheRises(params_, result.staircases);
     dropRampFlights(cloud_robot, params_, result.staircases);
     dropSecondViews(result.staircases);  // the chains Algorithm 2 left: levels differ (dev3 r0042)
     if (debug) debug->accepted = result.staircases;

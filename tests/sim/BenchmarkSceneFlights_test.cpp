@@ -280,9 +280,22 @@ TEST(NegativeScene, ARampSeenByALevelLidarIsNoFlight) { expectNoFlight(4004, 265
 // The check set's one false positive on a negative after the tilted-ring pass came in (seed 2002,
 // scene 165, looked at after scoring): a 13 deg ramp 4.5 m beside an HDL-32 pitched down 29 deg.
 // The rings climb it at a slant, and the pass's 5 cm rows cut them into a chain of 0.099 m
-// "rises", above dropFlightsBelowARise's bound (0.11 m less 2 cm of noise). The pass's flights
+// "rises", below dropFlightsOutsideTheRises's bound (0.11 m less 2 cm of noise). The pass's flights
 // must meet condition 1 outright. (The same ramp rebuilt with other sensor noise gives no chain.)
 TEST(NegativeScene, ARampBesideAPitchedLidarIsNoFlight) { expectNoFlight(2002, 165); }
+
+// A negative of a development set of negatives only (seed 5005, 303 negatives of 1200 scenes):
+// bleachers, four 0.375 m tiers on 0.88 m treads, 7.1 m from a VLP-16 pitched down 20 deg. The
+// sparse-mode rise tolerance (4 cm) lets its slanted rings' lines chain into a flight that reads
+// 0.356 m rises once measured; condition 1 on the whole flight (plus 2 cm of noise) rejects it.
+TEST(NegativeScene, BleachersSeenByAPitchedLidarAreNoFlight) {
+    expectNoFlight(5005, 687);
+    const sim::RandomCloud scene = test::benchmarkScene(5005, 687);
+    DetectorParams taller;  // the same tiers pass when condition 1 admits them
+    taller.max_step_height_m = 0.36;
+    EXPECT_FALSE(
+        StairDetector(taller).detect(scene.cloud, scene.truth.observer_floor_z).staircases.empty());
+}
 
 // A negative of the fourth check set (seed 7007, scene 150, looked at after scoring): a 14.8 deg
 // ramp up, 3.4 m wide, 4.2 m ahead of a level HDL-32. Its rings chain into two "flights" of four
