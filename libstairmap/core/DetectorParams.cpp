@@ -78,6 +78,8 @@ void DetectorParams::validate() const {
         requireRange(sparse_line_points, 2, 100000, "sparse_line_points");
         requireLess(sparse_line_points, min_line_points, "sparse_line_points", "min_line_points");
     }
+    if (few_level_spiral_levels != 0)
+        requireRange(few_level_spiral_levels, 2, 4, "few_level_spiral_levels");
     requireRange(point_sigma_m, 1e-5, 1.0, "point_sigma_m");
     requireRange(merge_chi2, 0.0, 1e6, "merge_chi2");
     requireRange(vertical_merge_dz_m, 0.0, 1.0, "vertical_merge_dz_m");

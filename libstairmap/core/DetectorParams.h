@@ -77,6 +77,13 @@ struct DetectorParams {
     /// they may turn (spirals chained step by step). The spiral search is not asked. 0 = off;
     /// else 2 .. min_line_points - 1.
     int sparse_line_points = 4;
+    /// [-] spirals seen over this many levels, fewer than the spiral search's five (SpiralSearch
+    /// min_seen_levels), are looked for too on the first pass's lines and added after every pass
+    /// where no flight found lies on them: a near view of a spiral's foot shows four levels with
+    /// lines (dev2 r0101, dev3 r0003). Asked in the search itself, four-level helices displaced
+    /// the longer flights later passes find on the same spiral (dev2 r0005, r0091) and read
+    /// rises and runs worse (dev rise MAE 0.244 -> 0.279 cm). 0 = off; else 2 .. 4.
+    int few_level_spiral_levels = 4;
     double point_sigma_m = 0.01;      ///< [m] std. dev. of a point for the weighted line fit
     double merge_chi2 = 9.21;         ///< [-] Mahalanobis gate to merge lines (chi2, 2 dof, 99 %)
     double vertical_merge_dz_m = 0.06;    ///< [m] lines of nearby rows closer in z are fused ...

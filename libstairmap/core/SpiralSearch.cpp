@@ -449,9 +449,10 @@ bool pairHelix(const SpiralLines& sl, int i, int j, const SpiralSearchParams& p,
     return helixThrough(ra, rb, p, h);
 }
 
-/// The spiral through the pair (i, j), with the lines it uses (empty edges when none).
+/// The spiral through the pair (i, j), with the lines it uses (empty edges when none). Where it
+/// has too few seen levels and `few` is given, the spiral of p.few_seen_levels goes there.
 SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector<char>& used,
-                          const SpiralSearchParams& p, std::vector<Radial>& in) {
+                          const SpiralSearchParams& p, std::vector<Radial>& in, SpiralFlight* few) {
     Helix h;
     if (!pairHelix(sl, i, j, p, h)) return {};
     in = collectInliers(sl, h, 0.0, p);
@@ -461,16 +462,25 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
     in.erase(std::remove_if(in.begin(), in.end(), [&](const Radial& r) { return used[r.index]; }),
              in.end());
     in = withExtraLevels(sl, h, std::move(in), used, p);
-    return buildFlight(sl, h, in, p);
+    SpiralFlight f = buildFlight(sl, h, in, p);
+    if (f.edges.empty() && few) {
+        SpiralSearchParams fewer = p;
+        fewer.min_seen_levels = p.few_seen_levels;
+        *few = buildFlight(sl, h, in, fewer);
+    }
+    return f;
 }
 
 /// Best spiral among the lines not yet used (empty edges when none), trying every pair of lines one
-/// to two rises apart with `ofPair(i, j, in)` (it returns the spiral through the pair and the lines
-/// it uses).
+/// to two rises apart with `ofPair(i, j, in, few)` (it returns the spiral through the pair and the
+/// lines it uses, and where `few` is given, a spiral of fewer seen levels there). The best of
+/// those goes to `best_few` when given.
 template <typename OfPair>
 SpiralFlight bestOfPairs(const SpiralLines& sl, const std::vector<char>& used,
-                         const SpiralSearchParams& p, std::vector<int>& inliers, OfPair&& ofPair) {
+                         const SpiralSearchParams& p, std::vector<int>& inliers, OfPair&& ofPair,
+                         SpiralFlight* best_few = nullptr) {
     SpiralFlight best;
+    std::size_t best_few_lines = 0;
     const int n = static_cast<int>(sl.size());
     std::vector<char> explored(n, 0);
     for (int i = 0; i < n; ++i) {
@@ -479,15 +489,22 @@ SpiralFlight bestOfPairs(const SpiralLines& sl, const std::vector<char>& used,
             if (used[i] || used[j] || (explored[i] && explored[j])) continue;
             if (dz < lowestRise(p) - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
             std::vector<Radial> in;
-            SpiralFlight f = ofPair(i, j, in);
-            if (f.edges.empty()) continue;
-            for (const Radial& r : in) explored[r.index] = 1;  // their other pairs: the same axis
+            SpiralFlight few;
+            SpiralFlight f = ofPair(i, j, in, best_few ? &few : nullptr);
             // More levels, then more seen ones, then more lines on the helices: a helix through
             // nosings below and back edges above (its step angle too large) can index as many
             // levels as the true one but holds fewer lines (dev r0245: 12 against 13).
             const auto rank = [](const SpiralFlight& s, std::size_t lines) {
                 return std::make_tuple(s.edges.size(), s.seen_levels, lines);
             };
+            if (f.edges.empty()) {  // its pairs are explored again: a spiral may still hold them
+                if (!few.edges.empty() && rank(few, in.size()) > rank(*best_few, best_few_lines)) {
+                    *best_few = std::move(few);
+                    best_few_lines = in.size();
+                }
+                continue;
+            }
+            for (const Radial& r : in) explored[r.index] = 1;  // their other pairs: the same axis
             if (rank(f, in.size()) > rank(best, inliers.size())) {
                 best = std::move(f);
                 inliers.clear();
@@ -498,12 +515,16 @@ SpiralFlight bestOfPairs(const SpiralLines& sl, const std::vector<char>& used,
     return best;
 }
 
-/// Best spiral of radial nosings among the lines not yet used (empty edges when none).
+/// Best spiral of radial nosings among the lines not yet used (empty edges when none), and the
+/// best of p.few_seen_levels seen levels into `few` when given.
 SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
-                        const SpiralSearchParams& p, std::vector<int>& inliers) {
-    return bestOfPairs(sl, used, p, inliers, [&](int i, int j, std::vector<Radial>& in) {
-        return spiralOfPair(sl, i, j, used, p, in);
-    });
+                        const SpiralSearchParams& p, std::vector<int>& inliers, SpiralFlight* few) {
+    return bestOfPairs(
+        sl, used, p, inliers,
+        [&](int i, int j, std::vector<Radial>& in, SpiralFlight* few_here) {
+            return spiralOfPair(sl, i, j, used, p, in, few_here);
+        },
+        few);
 }
 
 // ---- Spirals seen by their treads' outer rims -------------------------------------------------
@@ -651,24 +672,32 @@ SpiralFlight rimSpiralOfPair(const SpiralLines& sl, int i, int j, const std::vec
 /// Best rim-seen spiral among the lines not yet used (empty edges when none).
 SpiralFlight bestRimSpiral(const SpiralLines& sl, const std::vector<char>& used,
                            const SpiralSearchParams& p, std::vector<int>& inliers) {
-    return bestOfPairs(sl, used, p, inliers, [&](int i, int j, std::vector<Radial>& in) {
-        return rimSpiralOfPair(sl, i, j, used, p, in);
-    });
+    return bestOfPairs(sl, used, p, inliers,
+                       [&](int i, int j, std::vector<Radial>& in, SpiralFlight*) {
+                           return rimSpiralOfPair(sl, i, j, used, p, in);
+                       });
 }
 
 }  // namespace
 
 std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drops,
                                       const std::vector<LineSegment>& back_drops,
-                                      const SpiralSearchParams& params) {
+                                      const SpiralSearchParams& params,
+                                      std::vector<SpiralFlight>* few_level) {
     SpiralLines sl = front_drops;  // a wedge's edges read as either drop, depending on the view
     sl.insert(sl.end(), back_drops.begin(), back_drops.end());
     std::vector<SpiralFlight> out;
     std::vector<char> used(sl.size(), 0);
+    const bool want_few =
+        few_level && params.few_seen_levels > 0 && params.few_seen_levels < params.min_seen_levels;
     for (int n = 0; n < params.max_spirals; ++n) {
         std::vector<int> inliers;
-        SpiralFlight f = bestSpiral(sl, used, params, inliers);
-        if (f.edges.empty()) break;
+        SpiralFlight few;
+        SpiralFlight f = bestSpiral(sl, used, params, inliers, want_few ? &few : nullptr);
+        if (f.edges.empty()) {  // the search over the lines no spiral took
+            if (!few.edges.empty()) few_level->push_back(std::move(few));
+            break;
+        }
         for (int k : inliers) used[k] = 1;
         // The remaining lines (the other drop's copies of the nosings, pieces) may give the same
         // spiral again, better seen: one spiral per footprint, the one with more levels.

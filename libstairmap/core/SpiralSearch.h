@@ -64,6 +64,10 @@ struct SpiralSearchParams {
     /// (tests/pipeline/TwoFloorDrive); 5 keeps dev recall and lowers spiral rise MAE
     int min_seen_levels = 5;
     int max_spirals = 2;                   ///< [-] search repeats on the remaining lines
+    /// [-] findSpirals' `few_level`: the best helix of this many seen levels (fewer than
+    /// min_seen_levels) among the lines no spiral took, everything else asked as of a spiral.
+    /// 0 = none.
+    int few_seen_levels = 0;
     /// Extra levels, admitted once a helix holds this many levels of lines found under the bounds
     /// above [-]: where a close view's column hides a nosing's inner part, or a back edge's line
     /// passes a little farther from the fitted axis, a level sits exactly on the helix's angle and
@@ -106,9 +110,12 @@ struct SpiralFlight {
 };
 
 /// Spirals among the lines of both drop directions (real z, any order; `front_drops` lower towards
-/// the robot at the origin, `back_drops` lower away from it). Ascending flights only.
+/// the robot at the origin, `back_drops` lower away from it). Ascending flights only. With
+/// `few_level` given and params.few_seen_levels set, the best spiral of that many seen levels
+/// among the lines left once the search ends (at most one) goes there.
 std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drops,
                                       const std::vector<LineSegment>& back_drops,
-                                      const SpiralSearchParams& params);
+                                      const SpiralSearchParams& params,
+                                      std::vector<SpiralFlight>* few_level = nullptr);
 
 }  // namespace stairmap

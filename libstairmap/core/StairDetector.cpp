@@ -553,11 +553,49 @@ void correctLowSpiralFoot(const PointCloud& cloud, double floor_z,
         correctRiserTopEdges(cloud, StairDirection::Ascending, floor_z, edges);
 }
 
-/// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
-/// steps (in its column's radius and height range) unless one of them has more steps.
-void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& front_drops,
-                      const std::vector<LineSegment>& back_drops, double floor_z,
-                      const DetectorParams& p, std::vector<Staircase>& out) {
+/// A spiral of the axis search and the flight it reports.
+struct FoundSpiral {
+    SpiralFlight spiral;
+    Staircase flight_out;
+};
+
+/// Whether most of flight `s`'s edges lie on spiral `f` (within its outer radius plus 0.15 m and
+/// a rise `max_rise_m` of its height range).
+bool liesOnSpiral(const Staircase& s, const SpiralFlight& f, double max_rise_m) {
+    const double z_lo = f.edges.front().z - max_rise_m;
+    const double z_hi = f.edges.back().z + max_rise_m;
+    int inside = 0;
+    for (const StairEdge& e : s.steps) {
+        const Eigen::Vector3d c = e.centre();
+        inside +=
+            (c.head<2>() - f.axis).norm() < f.outer_radius_m + 0.15 && c.z() > z_lo && c.z() < z_hi;
+    }
+    return 2 * inside > static_cast<int>(s.steps.size());
+}
+
+/// A found spiral as a flight (its lowest nosing corrected when read low).
+FoundSpiral spiralFlight(const PointCloud& cloud, const SpiralFlight& f, double floor_z,
+                         const DetectorParams& p) {
+    std::vector<LineSegment> edges = f.edges;
+    if (p.edge_height_tolerance_m > 0) correctLowSpiralFoot(cloud, floor_z, edges);
+    FoundSpiral found{f, makeStaircase(edges, StairDirection::Ascending, 0.5 * p.leaf_size_m)};
+    // The run at mid radius from the found lines: StepExtent's tread windows use it, and it is
+    // measured again from the measured edges (TurningFlight).
+    found.flight_out.step_depth = f.run_m;
+    found.flight_out.slope_rad = std::atan2(found.flight_out.step_height, f.run_m);
+    return found;
+}
+
+/// Spiral `f` replaces the flights lying on it unless one of them has more steps.
+void placeSpiral(FoundSpiral f, double max_rise_m, std::vector<Staircase>& out) {
+    const auto on = [&](const Staircase& s) { return liesOnSpiral(s, f.spiral, max_rise_m); };
+    for (const Staircase& s : out)
+        if (on(s) && s.steps.size() > f.spiral.edges.size()) return;
+    out.erase(std::remove_if(out.begin(), out.end(), on), out.end());
+    out.push_back(std::move(f.flight_out));
+}
+
+SpiralSearchParams spiralParams(double floor_z, const DetectorParams& p) {
     SpiralSearchParams sp;
     sp.floor_z = floor_z;
     sp.min_first_height_m = p.floor_tolerance_m;
@@ -568,30 +606,31 @@ void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& f
     sp.min_run_m = p.min_step_depth_m;
     sp.max_run_m = p.max_step_depth_m;
     sp.min_steps = p.min_steps;
-    for (const SpiralFlight& f : findSpirals(front_drops, back_drops, sp)) {
-        const double z_lo = f.edges.front().z - p.max_step_height_m;
-        const double z_hi = f.edges.back().z + p.max_step_height_m;
-        auto onSpiral = [&](const Staircase& s) {
-            int inside = 0;
-            for (const StairEdge& e : s.steps) {
-                const Eigen::Vector3d c = e.centre();
-                inside += (c.head<2>() - f.axis).norm() < f.outer_radius_m + 0.15 && c.z() > z_lo &&
-                          c.z() < z_hi;
-            }
-            return 2 * inside > static_cast<int>(s.steps.size());
-        };
-        bool longer_chain = false;
-        for (const Staircase& s : out) longer_chain |= onSpiral(s) && s.steps.size() > f.edges.size();
-        if (longer_chain) continue;
-        out.erase(std::remove_if(out.begin(), out.end(), onSpiral), out.end());
-        // The run at mid radius from the found lines: StepExtent's tread windows use it, and it
-        // is measured again from the measured edges (TurningFlight).
-        std::vector<LineSegment> edges = f.edges;
-        if (p.edge_height_tolerance_m > 0) correctLowSpiralFoot(cloud, floor_z, edges);
-        out.push_back(makeStaircase(edges, StairDirection::Ascending, 0.5 * p.leaf_size_m));
-        out.back().step_depth = f.run_m;
-        out.back().slope_rad = std::atan2(out.back().step_height, f.run_m);
-    }
+    return sp;
+}
+
+/// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
+/// steps (in its column's radius and height range) unless one of them has more steps. With
+/// `few_level` given, the spirals of p.few_level_spiral_levels seen levels go there, to be placed
+/// once every pass has run (placeFewLevelSpirals).
+void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& front_drops,
+                      const std::vector<LineSegment>& back_drops, double floor_z,
+                      const DetectorParams& p, std::vector<Staircase>& out,
+                      std::vector<FoundSpiral>* few_level) {
+    SpiralSearchParams sp = spiralParams(floor_z, p);
+    sp.few_seen_levels = p.few_level_spiral_levels;
+    std::vector<SpiralFlight> few;
+    for (const SpiralFlight& f :
+         findSpirals(front_drops, back_drops, sp, few_level ? &few : nullptr))
+        placeSpiral(spiralFlight(cloud, f, floor_z, p), p.max_step_height_m, out);
+    for (const SpiralFlight& f : few) few_level->push_back(spiralFlight(cloud, f, floor_z, p));
+}
+
+/// The spirals of few seen levels (DetectorParams::few_level_spiral_levels) that no flight found
+/// by any pass overlaps: where one does, it is the same spiral found better or something else.
+void placeFewLevelSpirals(std::vector<FoundSpiral>& few_level, std::vector<Staircase>& found) {
+    for (FoundSpiral& s : few_level)
+        if (!overlapsAnyFlight(s.flight_out, found)) found.push_back(std::move(s.flight_out));
 }
 
 FlightJoinParams joinParams(const DetectorParams& p) {
@@ -602,13 +641,13 @@ FlightJoinParams joinParams(const DetectorParams& p) {
 }
 
 /// Algorithm 1 both ways on the lines of `cells` (rows of p.row_height_m) off the flights in
-/// `found_before`, the detector's merges of its own chains, then the spirals. `user` are the
-/// parameters as given (p may have a raised split distance or other rows).
-std::vector<Staircase> findFlights(const PointCloud& cloud, const Candidates& cand,
-                                   double floor_z, const DetectorParams& p,
-                                   const DetectorParams& user,
-                                   const std::vector<Staircase>& found_before,
-                                   DetectorDebug* debug) {
+/// `found_before`, the detector's merges of its own chains, then the spirals (those of few seen
+/// levels into `few_level_spirals` when given). `user` are the parameters as given (p may have a
+/// raised split distance or other rows).
+std::vector<Staircase> findFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
+                                   const DetectorParams& p, const DetectorParams& user,
+                                   const std::vector<Staircase>& found_before, DetectorDebug* debug,
+                                   std::vector<FoundSpiral>* few_level_spirals = nullptr) {
     std::vector<Staircase> found;
     std::vector<LineSegment> front_drops, back_drops;  // real z, for the spiral search
     if (p.detect_ascending)
@@ -621,7 +660,7 @@ std::vector<Staircase> findFlights(const PointCloud& cloud, const Candidates& ca
     joinContinuedFlights(found, joinParams(user));
     // After the merges, which compare the edges of straight flights.
     if (user.detect_ascending)
-        addSpiralFlights(cloud, front_drops, back_drops, floor_z, user, found);
+        addSpiralFlights(cloud, front_drops, back_drops, floor_z, user, found, few_level_spirals);
     return found;
 }
 
@@ -838,11 +877,14 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     const Candidates cand{cells, tl_arrays, tl_lines};
 
     const DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
-    result.staircases = findFlights(cloud_robot, cand, floor, p, params_, {}, debug);
+    std::vector<FoundSpiral> few_level_spirals;
+    result.staircases =
+        findFlights(cloud_robot, cand, floor, p, params_, {}, debug, &few_level_spirals);
     if (params_.tilted_ring_row_height_m > 0)
         addTiltedRingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     addDashedNosingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     addSparseLineFlights(cloud_robot, cand, floor, p, params_, result.staircases);
+    placeFewLevelSpirals(few_level_spirals, result.staircases);
     joinSpiralPieces(result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides

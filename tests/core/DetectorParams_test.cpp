@@ -114,6 +114,10 @@ INSTANTIATE_TEST_SUITE_P(
                  [](DetectorParams& p) { p.sparse_line_points = 5; }},
         BadValue{"sparse_line_points", [](DetectorParams& p) { p.sparse_line_points = 1; }},
         BadValue{"sparse_line_points", [](DetectorParams& p) { p.sparse_line_points = -1; }},
+        BadValue{"few_level_spiral_levels",  // the spiral search itself asks five
+                 [](DetectorParams& p) { p.few_level_spiral_levels = 5; }},
+        BadValue{"few_level_spiral_levels",
+                 [](DetectorParams& p) { p.few_level_spiral_levels = 1; }},
         // Top-view grid over the memory budget (the far-extent case of issue 8).
         BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},
         BadValue{"max_range_m",

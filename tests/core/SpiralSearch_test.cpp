@@ -128,6 +128,33 @@ TEST(SpiralSearch, PutsBackUnseenLevelsOnTheHelix) {
     }
 }
 
+// Four seen levels are one short of a spiral; asked for (few_seen_levels), the helix is reported
+// apart with its four nosings, and only among the lines no spiral took.
+TEST(SpiralSearch, ReportsAHelixOfFourSeenLevelsApartWhenAskedFor) {
+    Helix h;
+    std::vector<LineSegment> front;
+    for (int k = 1; k <= 4; ++k) front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    SpiralSearchParams p = paramsFor(h);
+    std::vector<SpiralFlight> few;
+    EXPECT_TRUE(findSpirals(front, {}, p, &few).empty());
+    EXPECT_TRUE(few.empty());  // not asked
+    p.few_seen_levels = 4;
+    EXPECT_TRUE(findSpirals(front, {}, p, &few).empty());
+    ASSERT_EQ(few.size(), 1u);
+    ASSERT_EQ(few[0].edges.size(), 4u);
+    EXPECT_EQ(few[0].seen_levels, 4);
+    EXPECT_LT((few[0].axis - h.axis).norm(), 0.01);
+    for (int k = 1; k <= 4; ++k) {
+        EXPECT_NEAR(few[0].edges[k - 1].z, h.zOf(k), 1e-9) << k;
+        EXPECT_LT(centreError(few[0].edges[k - 1], h, k), 0.03) << k;
+    }
+    // A fifth level makes it a spiral: reported as one, nothing apart.
+    front.push_back(radialLine(h, h.angleOf(5), h.zOf(5)));
+    few.clear();
+    EXPECT_EQ(findSpirals(front, {}, p, &few).size(), 1u);
+    EXPECT_TRUE(few.empty());
+}
+
 // Rises of 0.10-0.11 m (below condition 1's 0.11 m) read 0.093-0.107 m: a helix seen at every
 // level with rises of 0.102 m is a spiral (dev3 r0068 read aliased, at 1.5 rises, before).
 TEST(SpiralSearch, FindsASpiralWhoseRiseReadsJustBelowConditionOne) {
