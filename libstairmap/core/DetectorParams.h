@@ -79,8 +79,9 @@ struct DetectorParams {
     int sparse_line_points = 4;
     /// [-] spirals seen over this many levels, fewer than the spiral search's five (SpiralSearch
     /// min_seen_levels), are looked for too on the first pass's lines and added after every pass
-    /// where no flight found lies on them: a near view of a spiral's foot shows four levels with
-    /// lines (dev2 r0101, dev3 r0003). Asked in the search itself, four-level helices displaced
+    /// where no flight found lies on them: a near view of a short spiral shows four levels with
+    /// lines (dev3 r0003); every level must be seen (SpiralSearchParams::few_max_missing_levels).
+    /// Asked in the search itself, four-level helices displaced
     /// the longer flights later passes find on the same spiral (dev2 r0005, r0091) and read
     /// rises and runs worse (dev rise MAE 0.244 -> 0.279 cm). 0 = off; else 2 .. 4.
     int few_level_spiral_levels = 4;

@@ -466,6 +466,7 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
     if (f.edges.empty() && few) {
         SpiralSearchParams fewer = p;
         fewer.min_seen_levels = p.few_seen_levels;
+        fewer.max_missing_levels = p.few_max_missing_levels;
         *few = buildFlight(sl, h, in, fewer);
     }
     return f;

@@ -68,6 +68,11 @@ struct SpiralSearchParams {
     /// min_seen_levels) among the lines no spiral took, everything else asked as of a spiral.
     /// 0 = none.
     int few_seen_levels = 0;
+    /// [-] unseen levels such a helix may have put back between its seen ones: with four seen
+    /// levels the rise rests on them alone, and helices with gaps read rises and runs far off
+    /// (check11 r0069: 10 cm, check12 r0117: 12 cm of run, with 2); with 0 they read like the
+    /// others
+    int few_max_missing_levels = 0;
     /// Extra levels, admitted once a helix holds this many levels of lines found under the bounds
     /// above [-]: where a close view's column hides a nosing's inner part, or a back edge's line
     /// passes a little farther from the fitted axis, a level sits exactly on the helix's angle and

@@ -155,6 +155,26 @@ TEST(SpiralSearch, ReportsAHelixOfFourSeenLevelsApartWhenAskedFor) {
     EXPECT_TRUE(few.empty());
 }
 
+// With four seen levels the rise rests on them alone: a level put back between them is allowed
+// only when asked (few_max_missing_levels); by default such a helix is not reported (dev2 r0101).
+TEST(SpiralSearch, AHelixOfFourSeenLevelsWithAGapIsReportedOnlyWhenGapsAreAllowed) {
+    Helix h;
+    std::vector<LineSegment> front;
+    for (int k : {1, 2, 4, 5}) front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    SpiralSearchParams p = paramsFor(h);
+    p.few_seen_levels = 4;
+    std::vector<SpiralFlight> few;
+    EXPECT_TRUE(findSpirals(front, {}, p, &few).empty());
+    EXPECT_TRUE(few.empty());
+    p.few_max_missing_levels = 1;
+    EXPECT_TRUE(findSpirals(front, {}, p, &few).empty());
+    ASSERT_EQ(few.size(), 1u);
+    ASSERT_EQ(few[0].edges.size(), 5u);
+    EXPECT_EQ(few[0].seen_levels, 4);
+    EXPECT_EQ(few[0].edges[2].num_points, 0);  // level 3 put back
+    EXPECT_NEAR(few[0].edges[2].z, h.zOf(3), 0.005);
+}
+
 // Rises of 0.10-0.11 m (below condition 1's 0.11 m) read 0.093-0.107 m: a helix seen at every
 // level with rises of 0.102 m is a spiral (dev3 r0068 read aliased, at 1.5 rises, before).
 TEST(SpiralSearch, FindsASpiralWhoseRiseReadsJustBelowConditionOne) {

@@ -264,17 +264,17 @@ TEST(SparseLinePass, IsWhatFindsFlightsOfFourPointLines) {
     }
 }
 
-// Spirals seen over four levels with lines, one short of the spiral search's five: a 5-step
-// spiral 1.6 m from an HDL-32 pitched down 18 deg (dev3 r0003, every level of it) and the middle
-// of a 9-step one 3.1 m from an OS0-128 pitched down 16 deg (dev2 r0101, its lowest levels behind
-// the column; its rise reads 2 cm high). Added after every pass where no flight lies on them.
+// Spirals seen over four levels with lines, one short of the spiral search's five, every level
+// seen: a 5-step spiral 1.6 m from an HDL-32 pitched down 18 deg (dev3 r0003) and a 4-step
+// open-riser one 4.7 m from an OS1-64 pitched down 27 deg (check10 r0097, looked at after
+// scoring). Added after every pass where no flight lies on them.
 INSTANTIATE_TEST_SUITE_P(
     FewLevelSpirals, MissedBefore,
     testing::Values(SceneCase{4004, 3, 0.01, 0.03, true, "pitched HDL-32 at 1.6 m, 5 steps"},
-                    SceneCase{3003, 101, 0.025, 0.02, true, "pitched OS0-128 at 3.1 m"}));
+                    SceneCase{13013, 97, 0.01, 0.02, true, "pitched OS1-64 at 4.7 m, 4 steps"}));
 
 TEST(FewLevelSpirals, AreWhatFindsSpiralsOfFourSeenLevels) {
-    for (const auto& [seed, index] : {std::pair{4004, 3}, {3003, 101}}) {
+    for (const auto& [seed, index] : {std::pair{4004, 3}, {13013, 97}}) {
         const sim::RandomCloud scene = test::benchmarkScene(seed, index);
         ASSERT_FALSE(scene.truth.staircases.empty());
         DetectorParams off;
