@@ -81,9 +81,9 @@ struct DetectorParams {
     /// min_seen_levels), are looked for too on the first pass's lines and added after every pass
     /// where no flight found lies on them: a near view of a short spiral shows four levels with
     /// lines (dev3 r0003); every level must be seen (SpiralSearchParams::few_max_missing_levels).
-    /// Asked in the search itself, four-level helices displaced
-    /// the longer flights later passes find on the same spiral (dev2 r0005, r0091) and read
-    /// rises and runs worse (dev rise MAE 0.244 -> 0.279 cm). 0 = off; else 2 .. 4.
+    /// Asked in the search itself, four-level helices displaced the longer flights later passes
+    /// find on the same spiral (dev2 r0005, r0091) and read rises and runs worse (dev rise MAE
+    /// 0.244 -> 0.279 cm). 0 = off; else 2 .. 4.
     int few_level_spiral_levels = 4;
     double point_sigma_m = 0.01;      ///< [m] std. dev. of a point for the weighted line fit
     double merge_chi2 = 9.21;         ///< [-] Mahalanobis gate to merge lines (chi2, 2 dof, 99 %)

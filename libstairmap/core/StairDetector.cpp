@@ -553,12 +553,6 @@ void correctLowSpiralFoot(const PointCloud& cloud, double floor_z,
         correctRiserTopEdges(cloud, StairDirection::Ascending, floor_z, edges);
 }
 
-/// A spiral of the axis search and the flight it reports.
-struct FoundSpiral {
-    SpiralFlight spiral;
-    Staircase flight_out;
-};
-
 /// Whether most of flight `s`'s edges lie on spiral `f` (within its outer radius plus 0.15 m and
 /// a rise `max_rise_m` of its height range).
 bool liesOnSpiral(const Staircase& s, const SpiralFlight& f, double max_rise_m) {
@@ -574,27 +568,29 @@ bool liesOnSpiral(const Staircase& s, const SpiralFlight& f, double max_rise_m) 
 }
 
 /// A found spiral as a flight (its lowest nosing corrected when read low).
-FoundSpiral spiralFlight(const PointCloud& cloud, const SpiralFlight& f, double floor_z,
-                         const DetectorParams& p) {
+Staircase spiralStaircase(const PointCloud& cloud, const SpiralFlight& f, double floor_z,
+                          const DetectorParams& p) {
     std::vector<LineSegment> edges = f.edges;
     if (p.edge_height_tolerance_m > 0) correctLowSpiralFoot(cloud, floor_z, edges);
-    FoundSpiral found{f, makeStaircase(edges, StairDirection::Ascending, 0.5 * p.leaf_size_m)};
+    Staircase s = makeStaircase(edges, StairDirection::Ascending, 0.5 * p.leaf_size_m);
     // The run at mid radius from the found lines: StepExtent's tread windows use it, and it is
     // measured again from the measured edges (TurningFlight).
-    found.flight_out.step_depth = f.run_m;
-    found.flight_out.slope_rad = std::atan2(found.flight_out.step_height, f.run_m);
-    return found;
+    s.step_depth = f.run_m;
+    s.slope_rad = std::atan2(s.step_height, f.run_m);
+    return s;
 }
 
-/// Spiral `f` replaces the flights lying on it unless one of them has more steps.
-void placeSpiral(FoundSpiral f, double max_rise_m, std::vector<Staircase>& out) {
-    const auto on = [&](const Staircase& s) { return liesOnSpiral(s, f.spiral, max_rise_m); };
+/// Spiral `f` (as `flight`) replaces the flights lying on it unless one of them has more steps.
+void placeSpiral(const SpiralFlight& f, Staircase flight, double max_rise_m,
+                 std::vector<Staircase>& out) {
+    const auto on = [&](const Staircase& s) { return liesOnSpiral(s, f, max_rise_m); };
     for (const Staircase& s : out)
-        if (on(s) && s.steps.size() > f.spiral.edges.size()) return;
+        if (on(s) && s.steps.size() > f.edges.size()) return;
     out.erase(std::remove_if(out.begin(), out.end(), on), out.end());
-    out.push_back(std::move(f.flight_out));
+    out.push_back(std::move(flight));
 }
 
+/// The spiral search's bounds from the detector's (conditions 1 and 2, the initialisation height).
 SpiralSearchParams spiralParams(double floor_z, const DetectorParams& p) {
     SpiralSearchParams sp;
     sp.floor_z = floor_z;
@@ -616,21 +612,21 @@ SpiralSearchParams spiralParams(double floor_z, const DetectorParams& p) {
 void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& front_drops,
                       const std::vector<LineSegment>& back_drops, double floor_z,
                       const DetectorParams& p, std::vector<Staircase>& out,
-                      std::vector<FoundSpiral>* few_level) {
+                      std::vector<Staircase>* few_level) {
     SpiralSearchParams sp = spiralParams(floor_z, p);
     sp.few_seen_levels = p.few_level_spiral_levels;
     std::vector<SpiralFlight> few;
     for (const SpiralFlight& f :
          findSpirals(front_drops, back_drops, sp, few_level ? &few : nullptr))
-        placeSpiral(spiralFlight(cloud, f, floor_z, p), p.max_step_height_m, out);
-    for (const SpiralFlight& f : few) few_level->push_back(spiralFlight(cloud, f, floor_z, p));
+        placeSpiral(f, spiralStaircase(cloud, f, floor_z, p), p.max_step_height_m, out);
+    for (const SpiralFlight& f : few) few_level->push_back(spiralStaircase(cloud, f, floor_z, p));
 }
 
 /// The spirals of few seen levels (DetectorParams::few_level_spiral_levels) that no flight found
 /// by any pass overlaps: where one does, it is the same spiral found better or something else.
-void placeFewLevelSpirals(std::vector<FoundSpiral>& few_level, std::vector<Staircase>& found) {
-    for (FoundSpiral& s : few_level)
-        if (!overlapsAnyFlight(s.flight_out, found)) found.push_back(std::move(s.flight_out));
+void placeFewLevelSpirals(std::vector<Staircase>& few_level, std::vector<Staircase>& found) {
+    for (Staircase& s : few_level)
+        if (!overlapsAnyFlight(s, found)) found.push_back(std::move(s));
 }
 
 FlightJoinParams joinParams(const DetectorParams& p) {
@@ -647,7 +643,7 @@ FlightJoinParams joinParams(const DetectorParams& p) {
 std::vector<Staircase> findFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
                                    const DetectorParams& p, const DetectorParams& user,
                                    const std::vector<Staircase>& found_before, DetectorDebug* debug,
-                                   std::vector<FoundSpiral>* few_level_spirals = nullptr) {
+                                   std::vector<Staircase>* few_level_spirals = nullptr) {
     std::vector<Staircase> found;
     std::vector<LineSegment> front_drops, back_drops;  // real z, for the spiral search
     if (p.detect_ascending)
@@ -877,7 +873,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     const Candidates cand{cells, tl_arrays, tl_lines};
 
     const DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
-    std::vector<FoundSpiral> few_level_spirals;
+    std::vector<Staircase> few_level_spirals;
     result.staircases =
         findFlights(cloud_robot, cand, floor, p, params_, {}, debug, &few_level_spirals);
     if (params_.tilted_ring_row_height_m > 0)
