@@ -300,8 +300,9 @@ TEST(NegativeScene, ARampSeenByALevelLidarIsNoFlight) { expectNoFlight(4004, 265
 // The check set's one false positive on a negative after the tilted-ring pass came in (seed 2002,
 // scene 165, looked at after scoring): a 13 deg ramp 4.5 m beside an HDL-32 pitched down 29 deg.
 // The rings climb it at a slant, and the pass's 5 cm rows cut them into a chain of 0.099 m
-// "rises", below dropFlightsOutsideTheRises's bound (0.11 m less 2 cm of noise). The pass's flights
-// must meet condition 1 outright. (The same ramp rebuilt with other sensor noise gives no chain.)
+// "rises", above dropFlightsOutsideTheRises's lower bound (0.11 m less 2 cm of noise). The pass's
+// flights must meet condition 1 outright. (The same ramp rebuilt with other sensor noise gives no
+// chain.)
 TEST(NegativeScene, ARampBesideAPitchedLidarIsNoFlight) { expectNoFlight(2002, 165); }
 
 // A negative of a development set of negatives only (seed 5005, 303 negatives of 1200 scenes):
