@@ -7,6 +7,9 @@
 #ifdef __SSE__
 #include <xmmintrin.h>
 #endif
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace stairmap {
 namespace {
@@ -189,8 +192,27 @@ bool radialOffsets(float x, float y, int nx, int (&offsets)[kPad]) {
     const float ux = x * inv_r, uy = y * inv_r;
     // Rounding by truncation after shifting |v| <= kPad to positive values (std::floor is a libm
     // call without SSE4.1); halves round up.
-    auto round = [](float v) { return static_cast<int>(v + (0.5f + kPad + 1)) - (kPad + 1); };
+    constexpr float kShift = 0.5f + kPad + 1;
+#ifdef __SSE2__
+    // Four offsets at a time (a tenth of the top view when scalar). Rounded steps are small
+    // integers, so step_y * nx + step_x is exact in float.
+    static_assert(kPad % 4 == 0, "offsets come in fours");
+    const __m128 shift = _mm_set1_ps(kShift), ux4 = _mm_set1_ps(ux), uy4 = _mm_set1_ps(uy);
+    const __m128 nx4 = _mm_set1_ps(static_cast<float>(nx));
+    const __m128 whole = _mm_set1_ps(kPad + 1);
+    for (int k = 0; k < kPad; k += 4) {
+        const __m128 steps = _mm_setr_ps(k + 1.f, k + 2.f, k + 3.f, k + 4.f);
+        auto rounded = [&](__m128 u) {
+            const __m128i t = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(steps, u), shift));
+            return _mm_sub_ps(_mm_cvtepi32_ps(t), whole);
+        };
+        const __m128 off = _mm_add_ps(_mm_mul_ps(rounded(uy4), nx4), rounded(ux4));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(offsets + k), _mm_cvtps_epi32(off));
+    }
+#else
+    auto round = [](float v) { return static_cast<int>(v + kShift) - (kPad + 1); };
     for (int k = 0; k < kPad; ++k) offsets[k] = round((k + 1) * uy) * nx + round((k + 1) * ux);
+#endif
     return true;
 }
 
