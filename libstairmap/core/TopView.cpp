@@ -284,8 +284,12 @@ struct ClearOnExit {
         for (std::size_t s = 0; s < written.size(); ++s) {
             if (!written[s]) continue;
             const std::size_t first = s << kSegmentShift;
-            const std::size_t count = std::min<std::size_t>(kSegment, n - first);
-            std::memset(grid.data() + first, 0, count * sizeof(Column));
+            Column* const segment = grid.data() + first;
+            if (first + kSegment <= n) {  // a whole segment: fixed-size stores, no libc call
+                for (int k = 0; k < kSegment; ++k) segment[k].bits = 0;
+            } else {
+                std::memset(segment, 0, (n - first) * sizeof(Column));
+            }
         }
         std::memset(written.data(), 0, written.size());
     }
