@@ -73,6 +73,46 @@ PointCloud rowSampledStepCloud() {
     return cloud;
 }
 
+/// A round platform step around the robot: floor out to kRingR, a 17 cm step up beyond it to
+/// kRingEnd, sampled on a 1 cm grid (off the column boundaries).
+constexpr float kRingR = 1.5f, kRingEnd = 2.2f;
+PointCloud ringStepCloud() {
+    PointCloud cloud;
+    int k = 0;
+    for (int i = 0; i < 440; ++i) {
+        for (int j = 0; j < 440; ++j) {
+            const float x = -2.1987f + 0.01f * i, y = -2.1987f + 0.01f * j;
+            const float r = std::hypot(x, y);
+            if (r < 0.3f || r > kRingEnd) continue;
+            const float z = (r < kRingR ? kFloorZ : kTreadZ) + 1e-6f * static_cast<float>(k++ % 97);
+            cloud.emplace_back(x, y, z);
+        }
+    }
+    return cloud;
+}
+
+TEST(TopView, TheNosingIsFoundInEveryDirectionAroundTheRobot) {
+    // The radial neighbours are looked up along each column's own direction from the robot: in
+    // all eight octants (negative offsets, steep and shallow directions) the step's inner edge is
+    // an ascending nosing and the platform's inside is not.
+    std::vector<TopViewCell> cells;
+    buildTopView(ringStepCloud(), stepParams(), cells);
+    int per_octant[8] = {};
+    for (const auto& c : cells) {
+        const float r = std::hypot(c.x, c.y);
+        if (!(c.flags & kFrontDrop)) continue;
+        EXPECT_NEAR(c.z, kTreadZ, 0.001) << c.x << ", " << c.y;
+        EXPECT_LT(r, kRingR + 0.05f) << c.x << ", " << c.y;  // no candidate inside the platform
+        const double octant = std::floor((std::atan2(c.y, c.x) + M_PI) / (M_PI / 4));
+        ++per_octant[std::clamp(static_cast<int>(octant), 0, 7)];
+    }
+    // Each octant's arc of the 1.5 m circle is 1.18 m: about 47 columns of 2.5 cm.
+    for (int o = 0; o < 8; ++o) {
+        EXPECT_GE(per_octant[o], 40) << "octant " << o;
+        EXPECT_LE(per_octant[o], 75) << "octant " << o;
+    }
+}
+
 TEST(TopView, GapsBetweenRowsOfATreadAreNoDrops) {
     std::vector<TopViewCell> cells;
     buildTopView(rowSampledStepCloud(), stepParams(), cells);
