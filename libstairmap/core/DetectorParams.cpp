@@ -52,6 +52,7 @@ void DetectorParams::validate() const {
     requireRange(leaf_size_m, 0.005, 0.2, "leaf_size_m");
     requireRange(max_range_m, 0.5, 200.0, "max_range_m");
     requireRange(max_ramp_rms_ratio, 0.0, 10.0, "max_ramp_rms_ratio");
+    requireRange(max_descent_start_off_level, 0.0, 1.0, "max_descent_start_off_level");
     requireRange(max_height_above_floor_m, 0.3, 50.0, "max_height_above_floor_m");
     requireRange(max_depth_below_floor_m, 0.0, 50.0, "max_depth_below_floor_m");
     requireRange(row_height_m, 0.005, 0.2, "row_height_m");

@@ -135,6 +135,12 @@ struct DetectorParams {
     /// short chains' continuation asks 0.8 (ramp_max_rms_ratio); whole flights read 0.75 and
     /// more on the dev sets, the ramp of check4 r0150 0.15-0.46.
     double max_ramp_rms_ratio = 0.6;
+    /// [0..1] a descending flight whose first edge lies below the floor starts from level
+    /// surfaces (a tread, a landing, the steps above it); when more than this fraction of the
+    /// points in front of that edge lie off those levels, it starts on a ramp and is a ramp's ring
+    /// lines seen from its top (DescentStart.h). Found descents on the dev sets read 0-0.04, the
+    /// dev negatives' ramps 0.36-0.73. 1 = off.
+    double max_descent_start_off_level = 0.2;
     /// [m] ring-aliased flights: a far LiDAR may see every other nosing only (each pair two
     /// steps apart, runs beyond condition 2's bound). An ascending chain of such pairs, its rises
     /// in [2 min_step_height_m, this] and runs in [2 min_step_depth_m, 2 max_step_depth_m], whose

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/CylindricalRows.h"
+#include "core/DescentStart.h"
 #include "core/FlightContinuation.h"
 #include "core/FlightFootprint.h"
 #include "core/FlightJoin.h"
@@ -755,6 +756,19 @@ void dropRampFlights(const PointCloud& cloud, const DetectorParams& p,
     flights.erase(std::remove_if(flights.begin(), flights.end(), ramp), flights.end());
 }
 
+/// Descending flights whose first edge lies below the floor on a slope (descentStartsOnASlope,
+/// asked with p.max_descent_start_off_level) are a ramp's ring lines seen from its top.
+void dropDescentsFromASlope(const PointCloud& cloud, double floor_z, const DetectorParams& p,
+                            std::vector<Staircase>& flights) {
+    if (p.max_descent_start_off_level >= 1.0) return;
+    DescentStartParams dp;
+    dp.max_off_level_fraction = p.max_descent_start_off_level;
+    const auto on_slope = [&](const Staircase& s) {
+        return descentStartsOnASlope(cloud, s, floor_z, dp);
+    };
+    flights.erase(std::remove_if(flights.begin(), flights.end(), on_slope), flights.end());
+}
+
 /// Whether flight `s` is a regular straight flight (isRegularStraightChain with the edges within
 /// kRampTestMaxTurnDeg of the last; descending flights in mirrored z about `floor_z`).
 bool isRegularFlight(const Staircase& s, double floor_z) {
@@ -898,6 +912,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     mergeOverlappingFlights(result.staircases);
     dropFlightsOutsideTheRises(params_, result.staircases);
     dropRampFlights(cloud_robot, params_, result.staircases);
+    dropDescentsFromASlope(cloud_robot, floor, params_, result.staircases);
     dropSecondViews(result.staircases);  // the chains Algorithm 2 left: levels differ (dev3 r0042)
     if (debug) debug->accepted = result.staircases;
     return result;

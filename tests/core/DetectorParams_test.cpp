@@ -107,6 +107,10 @@ INSTANTIATE_TEST_SUITE_P(
                  [](DetectorParams& p) { p.min_deep_tread_m = 0.7; }},
         BadValue{"min_steps", [](DetectorParams& p) { p.min_steps = 1; }},
         BadValue{"max_ramp_rms_ratio", [](DetectorParams& p) { p.max_ramp_rms_ratio = -0.1; }},
+        BadValue{"max_descent_start_off_level",
+                 [](DetectorParams& p) { p.max_descent_start_off_level = 1.5; }},
+        BadValue{"max_descent_start_off_level",
+                 [](DetectorParams& p) { p.max_descent_start_off_level = -0.1; }},
         BadValue{"dashed_nosing_gap_m",  // gaps no longer than the first pass's
                  [](DetectorParams& p) { p.dashed_nosing_gap_m = 0.15; }},
         BadValue{"dashed_nosing_gap_m", [](DetectorParams& p) { p.dashed_nosing_gap_m = -1; }},

@@ -118,6 +118,7 @@ void readDetection(const SectionReader& r, DetectorParams& p) {
     r.boolean("continue_every_other_step", p.continue_every_other_step);
     r.boolean("continue_by_next_riser", p.continue_by_next_riser);
     r.number("max_ramp_rms_ratio", p.max_ramp_rms_ratio);
+    r.number("max_descent_start_off_level", p.max_descent_start_off_level);
     r.number("max_slope_deg", p.max_slope_deg);
     r.number("max_parallel_deg", p.max_parallel_deg);
     r.number("edge_height_tolerance_m", p.edge_height_tolerance_m);

@@ -85,6 +85,7 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_EQ(c.params.continue_every_other_step, d.continue_every_other_step);
     EXPECT_EQ(c.params.continue_by_next_riser, d.continue_by_next_riser);
     EXPECT_DOUBLE_EQ(c.params.max_ramp_rms_ratio, d.max_ramp_rms_ratio);
+    EXPECT_DOUBLE_EQ(c.params.max_descent_start_off_level, d.max_descent_start_off_level);
     EXPECT_DOUBLE_EQ(c.params.dashed_nosing_gap_m, d.dashed_nosing_gap_m);
     EXPECT_EQ(c.params.sparse_line_points, d.sparse_line_points);
     EXPECT_EQ(c.params.few_level_spiral_levels, d.few_level_spiral_levels);
