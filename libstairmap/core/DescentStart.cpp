@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/FlightPoints.h"
+
 namespace stairmap {
 
 bool descentStartsOnASlope(const PointCloud& cloud, const Staircase& s, double floor_z,
@@ -14,25 +16,22 @@ bool descentStartsOnASlope(const PointCloud& cloud, const Staircase& s, double f
     const Eigen::Vector2d a = first.start.head<2>(), b = first.end.head<2>();
     const double length = (b - a).norm();
     if (!(length > 0)) return false;
-    const Eigen::Vector2d along = (b - a) / length, centre = 0.5 * (a + b);
+    const Eigen::Vector2d along = (b - a) / length, centre = first.centre().head<2>();
     Eigen::Vector2d out(-along.y(), along.x());  // across the edge, down the flight
     const Eigen::Vector2d heading(std::cos(s.heading_rad), std::sin(s.heading_rad));
     if (out.dot(heading) < 0) out = -out;
     const double half = 0.5 * length * (1.0 - 2.0 * p.end_fraction);
-    const double z_lo = z0 - p.z_margin_m, z_hi = floor_z + p.z_margin_m;
-    // A box around the window: most of the cloud fails its four comparisons.
-    Eigen::Vector2d lo = centre, hi = centre;
+    // A box around the window: most of the cloud fails its comparisons.
+    FlightBox box{centre, centre, z0 - p.z_margin_m, floor_z + p.z_margin_m};
     for (const double d : {-p.to_m, -p.from_m})
         for (const double t : {-half, half}) {
             const Eigen::Vector2d q = centre + d * out + t * along;
-            lo = lo.cwiseMin(q);
-            hi = hi.cwiseMax(q);
+            box.lo = box.lo.cwiseMin(q);
+            box.hi = box.hi.cwiseMax(q);
         }
     int inside = 0, off_level = 0;
     for (const Eigen::Vector3f& q : cloud) {
-        if (!(q.z() >= z_lo && q.z() <= z_hi && q.x() >= lo.x() && q.x() <= hi.x() &&
-              q.y() >= lo.y() && q.y() <= hi.y()))
-            continue;  // also non-finite points
+        if (!box.contains(q)) continue;  // also non-finite points
         const Eigen::Vector2d d(q.x() - centre.x(), q.y() - centre.y());
         const double across = out.dot(d);
         if (across < -p.to_m || across > -p.from_m || std::abs(along.dot(d)) > half) continue;

@@ -284,13 +284,14 @@ TEST(FewLevelSpirals, AreWhatFindsSpiralsOfFourSeenLevels) {
 }
 
 /// A negative scene of the benchmark: the detector reports nothing in it.
-void expectNoFlight(int seed, int index) {
-    const sim::RandomCloud scene = test::benchmarkScene(seed, index);
+void expectNoFlight(const sim::RandomCloud& scene) {
     ASSERT_TRUE(scene.truth.staircases.empty());
     const DetectionResult result =
         StairDetector().detect(scene.cloud, scene.truth.observer_floor_z);
     EXPECT_TRUE(result.staircases.empty()) << result.staircases.size() << " staircases";
 }
+
+void expectNoFlight(int seed, int index) { expectNoFlight(test::benchmarkScene(seed, index)); }
 
 // A negative of a third development set (seed 4004): a 14 deg ramp up, 3.5 m wide, 2.6 m from a
 // level LiDAR. Its ring hits chain into a "flight" of 0.078 m rises; condition 1 on the whole
@@ -310,8 +311,8 @@ TEST(NegativeScene, ARampBesideAPitchedLidarIsNoFlight) { expectNoFlight(2002, 1
 // sparse-mode rise tolerance (4 cm) lets its slanted rings' lines chain into a flight that reads
 // 0.356 m rises once measured; condition 1 on the whole flight (plus 2 cm of noise) rejects it.
 TEST(NegativeScene, BleachersSeenByAPitchedLidarAreNoFlight) {
-    expectNoFlight(5005, 687);
     const sim::RandomCloud scene = test::benchmarkScene(5005, 687);
+    expectNoFlight(scene);
     DetectorParams taller;  // the same tiers pass when condition 1 admits them
     taller.max_step_height_m = 0.36;
     EXPECT_FALSE(
@@ -323,8 +324,8 @@ TEST(NegativeScene, BleachersSeenByAPitchedLidarAreNoFlight) {
 // edges (0.10 and 0.13 m rises, slopes 15-17 deg) that pass condition 1; their points lie on one
 // sloped line, not on a stair's profile (dropRampFlights). Without that test both are reported.
 TEST(NegativeScene, ARampAheadOfALevelLidarIsNoFlight) {
-    expectNoFlight(7007, 150);
     const sim::RandomCloud scene = test::benchmarkScene(7007, 150);
+    expectNoFlight(scene);
     DetectorParams off;
     off.max_ramp_rms_ratio = 0.0;
     EXPECT_FALSE(
@@ -348,8 +349,8 @@ TEST(NegativeScene, RampsBesidePitchedLidarsAreNoFlight) {
 TEST(NegativeScene, RampsDownSeenFromTheirTopAreNoFlight) {
     for (const auto& [seed, index] : {std::pair{22022, 92}, {22022, 928}, {5005, 759}}) {
         SCOPED_TRACE(testing::Message() << "seed " << seed << " scene " << index);
-        expectNoFlight(seed, index);
         const sim::RandomCloud scene = test::benchmarkScene(seed, index);
+        expectNoFlight(scene);
         DetectorParams off;
         off.max_descent_start_off_level = 1.0;
         EXPECT_FALSE(StairDetector(off)
