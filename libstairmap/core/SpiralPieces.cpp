@@ -43,18 +43,28 @@ StairEdge halfwayAbout(const StairEdge& a, const StairEdge& b, const Eigen::Vect
     return h;
 }
 
+/// Whether two turning flights turn the same way about one axis by one step angle: pieces of one
+/// spiral, whatever their heights.
+bool onOneSpiral(const Staircase& a, const TurningFlight& ta, const Staircase& b,
+                 const TurningFlight& tb, const SpiralPieceParams& p) {
+    if ((ta.axis - tb.axis).norm() > p.max_axis_distance_m) return false;
+    const double a_lo = std::min(ta.step_angle_rad, tb.step_angle_rad);
+    const double a_hi = std::max(ta.step_angle_rad, tb.step_angle_rad);
+    if (a_hi > p.max_step_angle_ratio * a_lo) return false;
+    const Eigen::Vector2d axis = 0.5 * (ta.axis + tb.axis);
+    return turnSign(a, axis) == turnSign(b, axis);
+}
+
 /// Whether `upper` continues `lower`'s helix; then the number of levels between (1 or 2).
 std::optional<int> continuesHelix(const Staircase& lower, const TurningFlight& tl,
                                   const Staircase& upper, const TurningFlight& tu,
                                   const SpiralPieceParams& p) {
-    if ((tl.axis - tu.axis).norm() > p.max_axis_distance_m) return std::nullopt;
+    if (!onOneSpiral(lower, tl, upper, tu, p)) return std::nullopt;
     if (std::abs(lower.step_height - upper.step_height) > p.max_rise_diff_m) return std::nullopt;
     const double a_lo = std::min(tl.step_angle_rad, tu.step_angle_rad);
     const double a_hi = std::max(tl.step_angle_rad, tu.step_angle_rad);
-    if (a_hi > p.max_step_angle_ratio * a_lo) return std::nullopt;
     const Eigen::Vector2d axis = 0.5 * (tl.axis + tu.axis);
     const double sign = turnSign(lower, axis);
-    if (turnSign(upper, axis) != sign) return std::nullopt;
     const double rise = 0.5 * (lower.step_height + upper.step_height);
     const double dz = upper.steps.front().start.z() - lower.steps.back().start.z();
     const int k = static_cast<int>(std::lround(dz / rise));
@@ -99,6 +109,30 @@ int joinSpiralPieces(std::vector<Staircase>& flights, const SpiralPieceParams& p
         }
     }
     return joined;
+}
+
+int dropSpiralRepeats(std::vector<Staircase>& flights, const SpiralPieceParams& p) {
+    std::vector<std::optional<TurningFlight>> turning;
+    turning.reserve(flights.size());
+    for (const Staircase& s : flights)
+        turning.push_back(s.direction == StairDirection::Ascending && !s.steps.empty()
+                              ? turningFlight(s)
+                              : std::nullopt);
+    std::vector<char> drop(flights.size(), 0);
+    for (std::size_t i = 0; i < flights.size(); ++i)
+        for (std::size_t j = 0; j < flights.size() && !drop[i]; ++j) {
+            if (i == j || drop[j] || !turning[i] || !turning[j]) continue;
+            const bool j_lower =
+                flights[j].steps.front().start.z() < flights[i].steps.front().start.z();
+            if (j_lower && onOneSpiral(flights[j], *turning[j], flights[i], *turning[i], p))
+                drop[i] = 1;
+        }
+    std::vector<Staircase> kept;
+    for (std::size_t i = 0; i < flights.size(); ++i)
+        if (!drop[i]) kept.push_back(std::move(flights[i]));
+    const int dropped = static_cast<int>(flights.size() - kept.size());
+    flights = std::move(kept);
+    return dropped;
 }
 
 }  // namespace stairmap

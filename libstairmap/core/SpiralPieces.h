@@ -32,4 +32,12 @@ struct SpiralPieceParams {
 /// O(n^2 k) for n flights of k steps.
 int joinSpiralPieces(std::vector<Staircase>& flights, const SpiralPieceParams& params = {});
 
+/// Drops the ascending turning flights that lie on one spiral with a flight starting lower (same
+/// axis, turn and step angle as joinSpiralPieces asks) but do not continue its helix: a level
+/// LiDAR sees a spiral's levels above its own height only by riser hits, whose lines lie at the
+/// rings' heights, 2-19 cm below the nosings they belong to (dev2 r0066: levels 0-4 found right,
+/// levels 6-13 read as a second flight starting 0.06 m above the first one's top). One spiral is
+/// one flight; the lowest piece holds its foot. Returns how many were dropped. O(n^2 k).
+int dropSpiralRepeats(std::vector<Staircase>& flights, const SpiralPieceParams& params = {});
+
 }  // namespace stairmap

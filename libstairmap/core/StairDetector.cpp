@@ -896,6 +896,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     addSparseLineFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     placeFewLevelSpirals(few_level_spirals, result.staircases);
     joinSpiralPieces(result.staircases);
+    dropSpiralRepeats(result.staircases);
     for (Staircase& s : result.staircases) {
         measureStepExtents(cloud_robot, s);  // widths, sides
         if (const auto turning = turningFlight(s)) {  // a spiral's run at mid radius

@@ -78,5 +78,48 @@ TEST(SpiralPieces, PiecesOfOtherSpiralsOrOffTheHelixStayApart) {
     EXPECT_EQ(joinSpiralPieces(other_turn), 0);
 }
 
+// A level LiDAR's riser hits put a spiral's upper levels at the rings' heights: the upper piece
+// lies on the lower one's axis, turn and step angle, but not on its helix, and is not joined.
+TEST(SpiralPieces, AnUpperPieceOffTheHelixIsDroppedAndTheFootKept) {
+    Staircase riser_hits = spiralPiece(8, 13);  // levels 5-7 unseen
+    for (StairEdge& e : riser_hits.steps) {     // read 4-16 cm low, as rings do
+        const double low = 0.04 + 0.02 * (&e - riser_hits.steps.data());
+        e.start.z() -= low;
+        e.end.z() -= low;
+    }
+    estimateGeometry(riser_hits);
+    std::vector<Staircase> flights = {riser_hits, spiralPiece(0, 4)};  // upper one listed first
+    ASSERT_EQ(joinSpiralPieces(flights), 0);
+    EXPECT_EQ(dropSpiralRepeats(flights), 1);
+    ASSERT_EQ(flights.size(), 1u);
+    ASSERT_EQ(flights[0].steps.size(), 5u);
+    EXPECT_NEAR(flights[0].steps.front().start.z(), kRise, 1e-9);
+}
+
+TEST(SpiralPieces, FlightsOfOtherSpiralsOrStraightOnesAreNoRepeats) {
+    std::vector<Staircase> other_axis = {spiralPiece(0, 4), spiralPiece(8, 12, {3.5, 1.0})};
+    EXPECT_EQ(dropSpiralRepeats(other_axis), 0);
+    EXPECT_EQ(other_axis.size(), 2u);
+    std::vector<Staircase> other_turn = {spiralPiece(0, 4), spiralPiece(8, 12, {3.0, 1.0}, -1.0)};
+    EXPECT_EQ(dropSpiralRepeats(other_turn), 0);
+    Staircase straight;  // five parallel nosings above the spiral's axis
+    for (int k = 0; k < 5; ++k) {
+        StairEdge e;
+        e.start << 3.0 + 0.3 * k, 0.5, 1.0 + kRise * k;
+        e.end << 3.0 + 0.3 * k, 1.5, 1.0 + kRise * k;
+        e.num_points = 20;
+        straight.steps.push_back(e);
+    }
+    estimateGeometry(straight);
+    std::vector<Staircase> beside = {spiralPiece(0, 4), straight};
+    EXPECT_EQ(dropSpiralRepeats(beside), 0);
+    EXPECT_EQ(beside.size(), 2u);
+    // a descending flight is never a piece
+    Staircase down = spiralPiece(8, 12);
+    down.direction = StairDirection::Descending;
+    std::vector<Staircase> with_descent = {spiralPiece(0, 4), down};
+    EXPECT_EQ(dropSpiralRepeats(with_descent), 0);
+}
+
 }  // namespace
 }  // namespace stairmap

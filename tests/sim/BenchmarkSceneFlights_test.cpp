@@ -76,6 +76,14 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{1001, 34, 0.01, 0.03, true, "elevation map, five rims"},
                     SceneCase{1001, 189, 0.01, 0.03, true, "elevation map, rims seen in part"}));
 
+// A 17-level spiral 3.3 m from a level HDL-32 (dev2 r0066): levels 0-4 lie below the sensor and
+// are found with their helix; the levels above it are seen by riser hits only, at the rings'
+// heights (2-19 cm low), and chain into a second turning flight about the same axis that does not
+// continue the first one's helix (dropSpiralRepeats). One spiral, reported once, by its foot.
+INSTANTIATE_TEST_SUITE_P(SpiralRepeats, MissedBefore,
+                         testing::Values(SceneCase{3003, 66, 0.01, 0.03, true,
+                                                   "HDL-32, upper levels by riser hits"}));
+
 // A far level VLP-16 (5.9 m) sees every other nosing of an open-riser flight (0.118 m rises,
 // 0.239 m runs): pairs two steps apart, their runs beyond condition 2 (max_double_step_rise_m).
 INSTANTIATE_TEST_SUITE_P(RingAliasedFlights, MissedBefore,
