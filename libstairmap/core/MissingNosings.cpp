@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -77,7 +78,119 @@ bool seenBetween(const std::vector<LineSegment>& lines, const LineSegment& a,
     return false;
 }
 
+/// b's end points in the order of a's (start first): put-back nosings pair them up.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> endsAlong(const LineSegment& a, const LineSegment& b) {
+    if (a.direction().dot(b.end - b.start) >= 0) return {b.start, b.end};
+    return {b.end, b.start};
+}
+
+/// [m] positions of the edges across them: cumulative spacings from the first.
+std::vector<double> positionsAcross(const std::vector<LineSegment>& edges) {
+    std::vector<double> at(edges.size(), 0.0);
+    for (std::size_t i = 1; i < edges.size(); ++i)
+        at[i] = at[i - 1] + spacing(edges[i - 1], edges[i]);
+    return at;
+}
+
+/// Largest |v - (a + b k)| of the least-squares line through (k, v); +inf when k is constant.
+double lineFitError(const std::vector<double>& k, const std::vector<double>& v, double* slope) {
+    const double n = static_cast<double>(k.size());
+    double sk = 0, sv = 0, skk = 0, skv = 0;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+        sk += k[i];
+        sv += v[i];
+        skk += k[i] * k[i];
+        skv += k[i] * v[i];
+    }
+    const double det = n * skk - sk * sk;
+    if (!(det > 0)) return std::numeric_limits<double>::infinity();
+    const double b = (n * skv - sk * sv) / det, a = (sv - b * sk) / n;
+    if (slope) *slope = b;
+    double worst = 0;
+    for (std::size_t i = 0; i < k.size(); ++i)
+        worst = std::max(worst, std::abs(v[i] - a - b * k[i]));
+    return worst;
+}
+
+/// The levels (from 0) of positions `at` on the widest comb of one run in [min_run, max_run]
+/// that holds each within xy_tolerance_m, every pair 1-3 runs apart; empty when none does.
+std::vector<double> combLevels(const std::vector<double>& at, const SpacingLevelParams& p) {
+    std::vector<double> best;
+    double best_run = 0;
+    for (std::size_t j = 1; j < at.size(); ++j)
+        for (int m = 1; m <= 3; ++m) {
+            const double run = (at[j] - at[j - 1]) / m;
+            if (run < p.min_run_m || run > p.max_run_m || run <= best_run) continue;
+            std::vector<double> k(at.size());
+            bool rising = true;
+            std::size_t one_run_pairs = 0;
+            for (std::size_t i = 0; i < at.size(); ++i) {
+                k[i] = std::round(at[i] / run);
+                if (i == 0) continue;
+                if (k[i] - k[i - 1] < 1 || k[i] - k[i - 1] > 3) rising = false;
+                one_run_pairs += k[i] - k[i - 1] == 1;
+            }
+            // The run is the step most pairs show: a comb of half the run holds any chain.
+            if (!rising || 2 * one_run_pairs < at.size() - 1 ||
+                lineFitError(k, at, nullptr) > p.xy_tolerance_m)
+                continue;
+            best = std::move(k);
+            best_run = run;
+        }
+    return best;
+}
+
 }  // namespace
+
+int fillNosingsBySpacing(std::vector<LineSegment>& edges, const SpacingLevelParams& p) {
+    if (static_cast<int>(edges.size()) < p.min_edges) return 0;
+    for (const LineSegment& e : edges)
+        if (e.num_points == 0) return 0;  // seen edges only: put-back ones mark the height levels
+    const Eigen::Vector2d first = edges.front().direction();
+    const double min_cos = std::cos(p.max_turn_deg * M_PI / 180.0);
+    for (const LineSegment& e : edges)
+        if (std::abs(first.dot(e.direction())) < min_cos) return 0;
+    const std::vector<double> at = positionsAcross(edges);
+    const std::vector<double> comb = combLevels(at, p);
+    if (comb.empty() || comb.back() == static_cast<double>(edges.size() - 1)) return 0;
+    // The heights' own levels: the chain as fillMissingNosings would put its gaps back.
+    std::vector<LineSegment> by_height = edges;
+    fillMissingNosings(by_height, p.height_min_rise_m);
+    std::vector<double> height_levels;
+    for (std::size_t i = 0; i < by_height.size(); ++i)
+        if (by_height[i].num_points > 0) height_levels.push_back(static_cast<double>(i));
+    if (height_levels.size() != edges.size() ||
+        lineFitError(height_levels, at, nullptr) <= p.min_height_levels_error_m)
+        return 0;
+    for (std::size_t i = 1; i < edges.size(); ++i)
+        if (comb[i] - comb[i - 1] != height_levels[i] - height_levels[i - 1] &&
+            std::max(edges[i - 1].z, edges[i].z) <= p.riser_hits_above_z_m)
+            return 0;  // the levels differ where the heights are seen from above
+    std::vector<double> z;
+    for (const LineSegment& e : edges) z.push_back(e.z);
+    double rise = 0;
+    if (lineFitError(comb, z, &rise) > p.height_tolerance_m || std::abs(rise) < p.min_rise_m ||
+        std::abs(rise) > p.max_rise_m)
+        return 0;
+    std::vector<LineSegment> all;
+    int put_back = 0;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        if (i > 0) {
+            const int gap = static_cast<int>(comb[i] - comb[i - 1]);
+            const LineSegment& a = edges[i - 1];
+            const auto [b_start, b_end] = endsAlong(a, edges[i]);
+            const double b_z = edges[i].z;
+            for (int g = 1; g < gap; ++g, ++put_back) {
+                const double t = static_cast<double>(g) / gap;
+                all.push_back(unseenNosing((1 - t) * a.start + t * b_start,
+                                           (1 - t) * a.end + t * b_end, (1 - t) * a.z + t * b_z));
+            }
+        }
+        all.push_back(edges[i]);
+    }
+    edges = std::move(all);
+    return put_back;
+}
 
 LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double z) {
     LineSegment m;
@@ -95,10 +208,7 @@ LineSegment unseenNosing(const Eigen::Vector2d& start, const Eigen::Vector2d& en
 }
 
 LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b) {
-    const Eigen::Vector2d u = a.direction();
-    const bool same_order = u.dot(b.end - b.start) >= 0;
-    const Eigen::Vector2d b_start = same_order ? b.start : b.end;
-    const Eigen::Vector2d b_end = same_order ? b.end : b.start;
+    const auto [b_start, b_end] = endsAlong(a, b);
     return unseenNosing(0.5 * (a.start + b_start), 0.5 * (a.end + b_end), 0.5 * (a.z + b.z));
 }
 

@@ -30,6 +30,40 @@ LineSegment halfwayNosing(const LineSegment& a, const LineSegment& b);
 /// 0.25 / 0.59 -> 0.21 / 0.49 cm (r0098, r0151, r0170 had a nosing put back mid-tread).
 int fillMissingNosings(std::vector<LineSegment>& edges, double min_rise_m = 0.0);
 
+/// Levels of a chain read from its horizontal spacings where its heights disagree with them. A
+/// far level LiDAR sees the risers above its own height only by ring hits, up to a ring spacing
+/// under each nosing, and skips risers its rings miss: the chain's heights then step by the ring
+/// spacing while its lines stand one, two or three runs apart (dev3 r0288: a VLP-16 7.4 m from
+/// 0.20 m rises read as 0.28 m; pairs 1, 3, 2, 1 runs apart, chained as 1, 2, 1, 1 steps). The
+/// lines stand on the risers, so their spacing is the step's whatever height the rings hit.
+/// When every pair is a whole number (1-3) of one run apart (within xy_tolerance_m; most of them
+/// one run), the heights' own levels (fillMissingNosings) leave a pair off that comb by more than
+/// min_height_levels_error_m, every pair whose levels differ reaches above riser_hits_above_z_m,
+/// and the heights fit a line over the spacing's levels within height_tolerance_m at a rise in
+/// [min_rise_m, max_rise_m], the nosings between are put back (linear in XY and z) by spacing.
+struct SpacingLevelParams {
+    int min_edges = 5;                        ///< [-] seen edges needed: fewer pin no run
+    double min_run_m = 0.15;                  ///< [m] the run sought (condition 2) ...
+    double max_run_m = 0.45;                  ///< [m]
+    double xy_tolerance_m = 0.04;             ///< [m] every edge this close to its run's comb
+    double min_height_levels_error_m = 0.06;  ///< [m] the heights' levels off the comb by more
+    double height_tolerance_m = 0.08;         ///< [m] riser hits read up to a ring spacing low
+    double min_rise_m = 0.09;                 ///< [m] the rise over the spacing's levels ...
+    double max_rise_m = 0.32;                 ///< [m]
+    /// [deg] every edge this close to the first's direction: a turning chain's spacings are no comb
+    double max_turn_deg = 15.0;
+    /// [m] heights above this are riser hits' to doubt: the rings see risers from below above the
+    /// sensor, taken near the robot frame's origin (as RayClearance does); below it a LiDAR sees
+    /// the treads, and an elevation map or a camera's view every height, and their heights decide
+    double riser_hits_above_z_m = 0.0;
+    /// [m] fillMissingNosings' min_rise_m, for the heights' own levels
+    double height_min_rise_m = 0.0;
+};
+
+/// Puts back the nosings a chain stepped over by its spacing (SpacingLevelParams); `edges` in
+/// order from the floor outward, z real, all seen. Returns the number put back (0: unchanged).
+int fillNosingsBySpacing(std::vector<LineSegment>& edges, const SpacingLevelParams& params = {});
+
 /// A chain whose consecutive edges are each two steps apart (a far LiDAR whose rings alias with
 /// the steps sees every other nosing: DetectorParams::max_double_step_rise_m) as the flight: the
 /// nosing halfway between each pair put back (unseenNosing). Returns false and leaves `edges`

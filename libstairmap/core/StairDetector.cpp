@@ -355,13 +355,22 @@ void detectDirection(const PointCloud& cloud, const Candidates& cand,
     const auto chains = searchStaircases(lines, floor_z, p.floor_tolerance_m, search, &refused,
                                          debug || deep_treads || pairs_apart ? &used : nullptr, up,
                                          up ? &refused_ties : nullptr);
+    SpacingLevelParams spacing_levels;
+    spacing_levels.min_run_m = p.min_step_depth_m;
+    spacing_levels.max_run_m = p.max_step_depth_m;
+    spacing_levels.min_rise_m = p.min_step_height_m - kFlightRiseNoise;
+    spacing_levels.max_rise_m = p.max_step_height_m + kFlightRiseNoise;
+    spacing_levels.height_min_rise_m = p.min_step_height_m;
     const auto edgesOf = [&](const std::vector<LineSegment>& from, const std::vector<int>& chain) {
         std::vector<LineSegment> edges;
         for (int idx : chain) {
             edges.push_back(from[idx]);
             if (!up) edges.back().z = 2 * floor_z - edges.back().z;
         }
-        fillMissingNosings(edges, p.min_step_height_m);  // edges the search stepped over
+        // edges the search stepped over: by the lines' spacing where riser hits' heights
+        // disagree (ascending flights: a LiDAR looks down at the treads of descending ones)
+        if (!up || fillNosingsBySpacing(edges, spacing_levels) == 0)
+            fillMissingNosings(edges, p.min_step_height_m);
         return edges;
     };
     // Riser hits admitted by the height tolerance are raised onto the flight's nosing line.

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "support/HandMadeNosing.h"
@@ -122,6 +124,69 @@ TEST(MissingNosings, NoNosingIsPutBackWhereALineWasSeen) {
     lines.push_back(test::nosingAcrossY(1.0 + 3 * kRun + 0.02, 3 * kRise - 0.01, 0.2));
     EXPECT_FALSE(putBackEveryOtherNosing(lines, edges));
     EXPECT_EQ(edges.size(), 4u);
+}
+
+// A far level LiDAR's rings hit the risers above it (dev3 r0288: a VLP-16 7.4 m from 0.20 m rises
+// on 0.225 m runs): the chain's lines stand on steps 0, 1, 4, 6 and 7, but their heights step by
+// the rings' spacing, so by height they read as levels 0, 1, 3, 4, 5 (0.27 m rises).
+constexpr double kAliasedRun = 0.225;  // [m]
+const std::vector<int> kAliasedSteps = {0, 1, 4, 6, 7};
+const std::vector<double> kAliasedHeights = {-0.40, -0.15, 0.38, 0.69, 0.99};  // [m]
+
+std::vector<LineSegment> ringAliasedChain(double dz = 0.0) {
+    std::vector<LineSegment> edges;
+    for (std::size_t i = 0; i < kAliasedSteps.size(); ++i)
+        edges.push_back(nosing(7.0 + kAliasedSteps[i] * kAliasedRun, kAliasedHeights[i] + dz));
+    return edges;
+}
+
+TEST(NosingsBySpacing, RiserHitsAboveTheSensorAreLevelledByTheirSpacing) {
+    std::vector<LineSegment> edges = ringAliasedChain();
+    EXPECT_EQ(fillNosingsBySpacing(edges), 3);
+    ASSERT_EQ(edges.size(), 8u);
+    for (int k = 0; k < 8; ++k) {
+        const bool seen =
+            std::find(kAliasedSteps.begin(), kAliasedSteps.end(), k) != kAliasedSteps.end();
+        EXPECT_EQ(edges[k].num_points > 0, seen) << "level " << k;
+        EXPECT_NEAR(edges[k].centre().x(), 7.0 + k * kAliasedRun, 1e-9) << "level " << k;
+    }
+    EXPECT_NEAR(edges[4].z, 0.38, 1e-9);  // seen edges keep their heights
+    // by height alone one nosing is put back, in the 0.53 m pair: levels 0, 1, 3, 4, 5
+    std::vector<LineSegment> by_height = ringAliasedChain();
+    EXPECT_EQ(fillMissingNosings(by_height), 1);
+}
+
+TEST(NosingsBySpacing, HeightsSeenFromAboveDecide) {
+    // the same chain below the robot frame's origin: a LiDAR sees those treads from above, an
+    // elevation map every height; the heights' levels stand
+    std::vector<LineSegment> below = ringAliasedChain(-1.5);
+    EXPECT_EQ(fillNosingsBySpacing(below), 0);
+    EXPECT_EQ(below.size(), 5u);
+}
+
+TEST(NosingsBySpacing, ChainsTheSpacingDoesNotLevelAreLeft) {
+    // lines one run apart each: the heights' business (fillMissingNosings)
+    std::vector<LineSegment> consecutive;
+    for (int k = 0; k < 5; ++k) consecutive.push_back(nosing(7.0 + k * kAliasedRun, 0.3 * k));
+    EXPECT_EQ(fillNosingsBySpacing(consecutive), 0);
+    // four edges pin no run
+    std::vector<LineSegment> four = ringAliasedChain();
+    four.pop_back();
+    EXPECT_EQ(fillNosingsBySpacing(four), 0);
+    // a turning chain (a spiral's wedges, 8 deg per edge): its spacings are no comb
+    std::vector<LineSegment> turning = ringAliasedChain();
+    for (std::size_t i = 0; i < turning.size(); ++i) {
+        const double a = 8.0 * i * M_PI / 180.0;
+        const Eigen::Vector2d c = turning[i].centre(), u(-std::sin(a), std::cos(a));
+        turning[i].start = c - 0.6 * u;
+        turning[i].end = c + 0.6 * u;
+        turning[i].theta = a;
+    }
+    EXPECT_EQ(fillNosingsBySpacing(turning), 0);
+    // most pairs two runs apart: a comb of half the run holds any chain
+    std::vector<LineSegment> wide;
+    for (int k : {0, 2, 4, 6, 7}) wide.push_back(nosing(7.0 + k * kAliasedRun, 0.5 + 0.2 * k));
+    EXPECT_EQ(fillNosingsBySpacing(wide), 0);
 }
 
 }  // namespace

@@ -76,6 +76,14 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{1001, 34, 0.01, 0.03, true, "elevation map, five rims"},
                     SceneCase{1001, 189, 0.01, 0.03, true, "elevation map, rims seen in part"}));
 
+// A level VLP-16 7.4 m from a debris-strewn flight of 0.20 m rises on 0.225 m runs (dev3 r0288):
+// above the sensor its rings hit the risers of steps 4, 6 and 7 only, each at a ring's height, so
+// the chain read 0.28 m rises on 0.34 m runs (a miss and a false positive). Its lines stand 1, 3,
+// 2 and 1 runs apart; levelled by that spacing it reads its rise (fillNosingsBySpacing).
+INSTANTIATE_TEST_SUITE_P(RingHitsLevelledBySpacing, MissedBefore,
+                         testing::Values(SceneCase{4004, 288, 0.01, 0.03, true,
+                                                   "VLP-16 at 7.4 m, steps 4, 6, 7"}));
+
 // A 17-level spiral 3.3 m from a level HDL-32 (dev2 r0066): levels 0-4 lie below the sensor and
 // are found with their helix; the levels above it are seen by riser hits only, at the rings'
 // heights (2-19 cm low), and chain into a second turning flight about the same axis that does not
