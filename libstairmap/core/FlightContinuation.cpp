@@ -140,15 +140,20 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     const double s_lo = p.riser_from_runs * step.run, s_hi = p.riser_to_runs * step.run;
     const double z_lo = last.z + p.riser_from_rises * step.rise;
     const double z_hi = last.z + p.riser_to_rises * step.rise;
-    int on = 0, level = 0, above = 0;
+    const double s_beyond = s_hi + p.riser_beyond_runs * step.run;
+    int on = 0, level = 0, above = 0, flat_beyond = 0;
     double t_min = 1e9, t_max = -1e9;
-    const StripBox box = stripBox(c, step.up, u, s_lo, s_hi, half, last.z - p.tread_dz_m,
+    const StripBox box = stripBox(c, step.up, u, s_lo, s_beyond, half, last.z - p.tread_dz_m,
                                   std::numeric_limits<double>::max());
     for (const Eigen::Vector3f& q : cloud) {
         if (!box.mayContain(q)) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d), t = u.dot(d);
-        if (s < s_lo || s > s_hi || std::abs(t) > half) continue;
+        if (s < s_lo || s > s_beyond || std::abs(t) > half) continue;
+        if (s > s_hi) {
+            flat_beyond += q.z() >= z_lo && q.z() <= z_hi;
+            continue;
+        }
         if (q.z() >= z_lo && q.z() <= z_hi) {
             ++on;
             t_min = std::min(t_min, t);
@@ -159,7 +164,7 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
             ++above;
         }
     }
-    return on >= p.min_points && on > level && 4 * above <= on &&
+    return on >= p.min_points && on > level && on > 2 * flat_beyond && 4 * above <= on &&
            t_max - t_min >= p.min_spread_fraction * 2.0 * half;
 }
 

@@ -64,6 +64,12 @@ struct FlightContinuationParams {
     /// points below and the next tread's above
     double riser_from_rises = 0.25;
     double riser_to_rises = 0.85;
+    /// [-] ... and under half as many points at those heights in the next this-many runs behind
+    /// the window (the dev sets' flights continued by this cue have none there): a
+    /// riser is a face, the tread behind it a rise up; a platform whose edge reads a few cm low
+    /// (a riser hit) lies in the window's heights and goes on (two-step stages, negatives of seed
+    /// 26026: edges read 3 cm under the platform, which filled the window)
+    double riser_beyond_runs = 0.7;
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
@@ -85,8 +91,10 @@ bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
 /// Whether `edges` (as above) are a regular straight flight and the cloud shows the riser of the
 /// step above the last edge: points riser_from_rises..riser_to_rises rises above the last edge in
 /// the window riser_from_runs..riser_to_runs runs behind it, spread along it (as the next tread's),
-/// more of them than points at the last edge's own height beyond one run (a platform going on)
-/// and at most a quarter as many a rise and above_dz higher (a wall). A level LiDAR lower than a
+/// more of them than points at the last edge's own height beyond one run (a platform going on),
+/// more than twice as many as points at the window's heights up to riser_beyond_runs further
+/// behind (a platform whose edge was read low), and at most a quarter as many a rise and above_dz
+/// higher (a wall). A level LiDAR lower than a
 /// flight's upper treads sees their risers only (dev3 r0071: an HDL-32 6 m away, its first three
 /// nosings seen); a two-step stage's platform shows no riser one run behind its edge. Cost: one
 /// pass over the cloud.

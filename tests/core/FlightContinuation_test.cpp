@@ -123,6 +123,22 @@ TEST(FlightContinuation, AStagesPlatformOrAWallBehindTheLastEdgeIsNoRiser) {
     EXPECT_FALSE(riserAboveLastEdge(far, edges));
 }
 
+// A two-step stage's platform edge read as a riser hit, 0.3 rises under the platform (negatives
+// of seed 26026): the platform then lies in the riser window's heights, one run behind the edge,
+// and goes on behind it; a riser is a face with the next tread a rise higher behind it.
+TEST(FlightContinuation, APlatformBehindALastEdgeReadLowIsNoRiser) {
+    const std::vector<LineSegment> read_low = {step(1), step(2),
+                                               nosing(1.0 + 2 * kRun, 2.7 * kRise)};
+    PointCloud platform = threeTreads();
+    addTread(platform, 1.0 + 3 * kRun, 5.0, 3 * kRise);
+    EXPECT_FALSE(riserAboveLastEdge(platform, read_low));
+    // the same edges before a riser and the next tread a rise above it
+    PointCloud riser = threeTreads();
+    addRiser(riser, 1.0 + 3 * kRun, 3 * kRise, 4 * kRise);
+    addTread(riser, 1.0 + 3 * kRun, 1.0 + 4 * kRun, 4 * kRise);
+    EXPECT_TRUE(riserAboveLastEdge(riser, read_low));
+}
+
 TEST(FlightContinuation, AnIrregularChainIsNotContinuedByARiser) {
     PointCloud cloud = threeTreads();
     addRiser(cloud, 1.0 + 3 * kRun, 3 * kRise, 4 * kRise);

@@ -375,6 +375,18 @@ TEST(NegativeScene, RampsDownSeenFromTheirTopAreNoFlight) {
     }
 }
 
+// Two-step stages of a development set of negatives (seed 26026): a level OS0-128 5 m away and two
+// depth cameras 2.1-2.5 m away read the platform's edge as a riser hit 3 cm under the platform,
+// which then filled the next-riser window one run behind it and read as the riser of a fourth step
+// (riserAboveLastEdge). The platform goes on behind that window at the same height; a riser does
+// not.
+TEST(NegativeScene, TwoStepStagesWhoseEdgeReadsLowAreNoFlight) {
+    for (const int index : {262, 850, 1011}) {
+        SCOPED_TRACE(testing::Message() << "scene " << index);
+        expectNoFlight(26026, index);
+    }
+}
+
 // Descents whose first found edge lies one or five steps below the robot's floor (the floor's own
 // nosing unseen; a landing), dev3 r0086 the closest to those ramps (three edges, 0.107 m rises):
 // in front of the first edge lie level surfaces a whole number of rises apart, so each is kept.
