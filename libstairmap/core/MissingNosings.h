@@ -52,9 +52,10 @@ struct SpacingLevelParams {
     double max_rise_m = 0.32;                 ///< [m]
     /// [deg] every edge this close to the first's direction: a turning chain's spacings are no comb
     double max_turn_deg = 15.0;
-    /// [m] heights above this are riser hits' to doubt: the rings see risers from below above the
-    /// sensor, taken near the robot frame's origin (as RayClearance does); below it a LiDAR sees
-    /// the treads, and an elevation map or a camera's view every height, and their heights decide
+    /// [m] the pairs whose levels differ must reach above this height: above the sensor, taken
+    /// near the robot frame's origin (as RayClearance does), rings see risers from below and read
+    /// them low; below it a LiDAR sees the treads and their heights decide. The cloud does not say
+    /// its sensor: an elevation map's or a camera's heights above it are doubted as well
     double riser_hits_above_z_m = 0.0;
     /// [m] fillMissingNosings' min_rise_m, for the heights' own levels
     double height_min_rise_m = 0.0;
