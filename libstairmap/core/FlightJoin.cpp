@@ -21,37 +21,45 @@ bool startsOnLastLevel(const Staircase& near, const Staircase& far, const Flight
 }
 
 /// True when `far` starts beyond `near`'s last edge (or on its level) as a continuation of the
-/// same flight.
-bool continues(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
+/// same flight: next to it (within max_gap_runs, over the same width) or, `after_unseen`, a few
+/// unseen steps further (within max_unseen_steps + 1.5 runs, side by side allowed).
+bool continues(const Staircase& near, const Staircase& far, const FlightJoinParams& p,
+               bool after_unseen) {
     if (near.direction != far.direction || near.steps.empty() || far.steps.empty()) return false;
+    const double max_runs = after_unseen ? p.max_unseen_steps + 1.5 : p.max_gap_runs;
+    const bool short_far = far.steps.size() <= 3;
+    const double max_turn_deg =
+        after_unseen && short_far ? p.short_chain_max_heading_diff_deg : p.max_heading_diff_deg;
     const double turn = std::abs(std::remainder(far.heading_rad - near.heading_rad, 2 * M_PI));
-    if (turn > p.max_heading_diff_deg * M_PI / 180.0) return false;
+    if (turn > max_turn_deg * M_PI / 180.0) return false;
     const Eigen::Vector2d h(std::cos(near.heading_rad), std::sin(near.heading_rad));
     const StairEdge& last = near.steps.back();
     const StairEdge& first = far.steps.front();
     const double gap = h.dot((first.centre() - last.centre()).head<2>());
     const bool shared = startsOnLastLevel(near, far, p);
-    if (!shared && (gap <= 0.0 || gap > p.max_gap_runs * near.step_depth)) return false;
+    if (!shared && (gap <= 0.0 || gap > max_runs * near.step_depth)) return false;
     const double up = near.direction == StairDirection::Ascending ? 1.0 : -1.0;
     const double climb = up * (first.centre().z() - last.centre().z());
-    if (climb < -p.height_tolerance_m ||
-        climb > p.max_gap_runs * near.step_height + p.height_tolerance_m)
+    if (climb < -p.height_tolerance_m || climb > max_runs * near.step_height + p.height_tolerance_m)
         return false;
     // Over the same width: the flights' whole lateral extents, as a facing edge may be a piece.
     const Eigen::Vector2d lateral(-h.y(), h.x());
     const auto a = lateralExtent(near, lateral), b = lateralExtent(far, lateral);
     const double common = std::min(a.second, b.second) - std::max(a.first, b.first);
+    if (after_unseen) return common >= -p.max_lateral_gap_m;
     return common >= p.min_lateral_overlap * std::min(a.second - a.first, b.second - b.first);
 }
 
-/// True when far's edges are near's next steps: one run apart each and on its nosing line.
-bool onNosingLine(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
+/// True when far's edges are near's steps `first` (1: the next), `first` + 1, ...: one run apart
+/// each and on its nosing line.
+bool onNosingLine(const Staircase& near, const Staircase& far, const FlightJoinParams& p,
+                  int first) {
     const Eigen::Vector2d h(std::cos(near.heading_rad), std::sin(near.heading_rad));
     const double up = near.direction == StairDirection::Ascending ? 1.0 : -1.0;
     const Eigen::Vector3d base = near.steps.back().centre();
     for (std::size_t k = 0; k < far.steps.size(); ++k) {
         const Eigen::Vector3d c = far.steps[k].centre();
-        const double n = static_cast<double>(k + 1);  // steps beyond near's last edge
+        const double n = static_cast<double>(k) + first;  // steps beyond near's last edge
         if (std::abs(h.dot((c - base).head<2>()) - n * near.step_depth) > 0.5 * near.step_depth)
             return false;
         if (std::abs(up * (c.z() - base.z()) - n * near.step_height) > p.height_tolerance_m)
@@ -101,20 +109,45 @@ void joinAtSharedLevel(Staircase& near, const Staircase& far, const FlightJoinPa
     else if (far.steps.size() > near.steps.size()) near = far;
 }
 
+/// How many steps went unseen between `near` and `far` when far continues near's nosing line after
+/// them (0 to p.max_unseen_steps); -1 when it does not.
+int unseenStepsBetween(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
+    if (!continues(near, far, p, true)) return -1;
+    for (int unseen = 0; unseen <= p.max_unseen_steps; ++unseen)
+        if (onNosingLine(near, far, p, unseen + 1)) return unseen;
+    return -1;
+}
+
+/// Appends far's edges to near's, the `unseen` steps between them put back as near's last edge
+/// moved along the line between the two chains' facing edges' centres (num_points 0: unseen).
+void appendAfterUnseen(Staircase& near, const Staircase& far, int unseen) {
+    const StairEdge last = near.steps.back();
+    const Eigen::Vector3d span = far.steps.front().centre() - last.centre();
+    for (int n = 1; n <= unseen; ++n) {
+        StairEdge e = last;
+        const Eigen::Vector3d shift = span * (static_cast<double>(n) / (unseen + 1));
+        e.start += shift;
+        e.end += shift;
+        e.num_points = 0;
+        near.steps.push_back(e);
+    }
+    near.steps.insert(near.steps.end(), far.steps.begin(), far.steps.end());
+    estimateGeometry(near);
+}
+
 }  // namespace
 
 int joinContinuedFlights(std::vector<Staircase>& found, const FlightJoinParams& params) {
     int removed = 0;
     for (std::size_t i = 0; i < found.size(); ++i) {
         for (std::size_t j = 0; j < found.size(); ++j) {
-            if (i == j || !continues(found[i], found[j], params)) continue;
-            if (startsOnLastLevel(found[i], found[j], params)) {
+            if (i == j) continue;
+            const int unseen = unseenStepsBetween(found[i], found[j], params);
+            if (unseen < 0 && !continues(found[i], found[j], params, false)) continue;
+            if (unseen < 0 && startsOnLastLevel(found[i], found[j], params))
                 joinAtSharedLevel(found[i], found[j], params);
-            } else if (onNosingLine(found[i], found[j], params)) {
-                found[i].steps.insert(found[i].steps.end(), found[j].steps.begin(),
-                                      found[j].steps.end());
-                estimateGeometry(found[i]);
-            }
+            else if (unseen >= 0)
+                appendAfterUnseen(found[i], found[j], unseen);
             found.erase(found.begin() + static_cast<std::ptrdiff_t>(j));
             ++removed;
             return removed + joinContinuedFlights(found, params);  // indices moved: start over

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
+
 #include "core/StaircaseGeometry.h"
 
 namespace stairmap {
@@ -89,6 +92,64 @@ TEST(FlightJoin, OfChainsMeetingAtALevelOnDifferentRisesTheLongerIsKept) {
     ASSERT_EQ(found.size(), 1u);
     EXPECT_EQ(found[0].steps.size(), 8u);
     EXPECT_NEAR(found[0].steps.front().centre().z(), -0.33 + 3 * kRise, 1e-9);
+}
+
+TEST(FlightJoin, AContinuationAfterUnseenStepsIsAppendedWithThemPutBack) {
+    // steps 3 and 4 unseen (a far LiDAR's rings skipped them): the far chain lies on the near
+    // one's nosing line at its own index
+    std::vector<Staircase> found = {flight(0, 2), flight(5, 9)};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    ASSERT_EQ(found[0].steps.size(), 10u);
+    for (int k : {3, 4}) {
+        EXPECT_EQ(found[0].steps[k].num_points, 0) << "step " << k;
+        EXPECT_NEAR(found[0].steps[k].centre().x(), 1.5 + k * kRun, 1e-9) << "step " << k;
+        EXPECT_NEAR(found[0].steps[k].centre().z(), -0.33 + k * kRise, 1e-9) << "step " << k;
+    }
+    EXPECT_NEAR(found[0].step_height, kRise, 1e-9);
+    EXPECT_NEAR(found[0].step_depth, kRun, 1e-9);
+}
+
+TEST(FlightJoin, MoreUnseenStepsThanAllowedKeepTheChainsApart) {
+    std::vector<Staircase> found = {flight(0, 2), flight(6, 9)};  // three unseen, two allowed
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 0);
+    EXPECT_EQ(found.size(), 2u);
+}
+
+/// flight(first, last, y_c) with every edge turned by `deg` about its centre: a short chain
+/// whose heading reads off.
+Staircase turnedFlight(int first, int last, double y_c, double deg) {
+    Staircase s = flight(first, last, y_c);
+    const Eigen::Matrix3d r =
+        Eigen::AngleAxisd(deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    for (StairEdge& e : s.steps) {
+        const Eigen::Vector3d c = e.centre();
+        e.start = c + r * (e.start - c);
+        e.end = c + r * (e.end - c);
+    }
+    estimateGeometry(s);
+    return s;
+}
+
+TEST(FlightJoin, AShortPieceBesideTheFlightAfterAnUnseenStepIsAppended) {
+    // a wide flight seen on its right up to step 5 and on its left at steps 7-9, whose three
+    // short edges read 20 deg turned; the two pieces' lateral extents 5 cm apart
+    std::vector<Staircase> found = {flight(0, 5), turnedFlight(7, 9, kWidth + 0.05, 20.0)};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    ASSERT_EQ(found[0].steps.size(), 10u);
+    EXPECT_EQ(found[0].steps[6].num_points, 0);
+    EXPECT_NEAR(found[0].step_height, kRise, 1e-9);
+}
+
+TEST(FlightJoin, PiecesFarApartSideBySideOrTurnedMoreStaySeparate) {
+    std::vector<Staircase> apart = {flight(0, 5), turnedFlight(7, 9, kWidth + 0.3, 20.0)};
+    EXPECT_EQ(joinContinuedFlights(apart, FlightJoinParams{}), 0);
+    std::vector<Staircase> turned = {flight(0, 5), turnedFlight(7, 9, kWidth + 0.05, 35.0)};
+    EXPECT_EQ(joinContinuedFlights(turned, FlightJoinParams{}), 0);
+    // four edges: its heading is trusted to the adjacent chains' 15 deg
+    std::vector<Staircase> longer = {flight(0, 5), turnedFlight(7, 10, kWidth + 0.05, 20.0)};
+    EXPECT_EQ(joinContinuedFlights(longer, FlightJoinParams{}), 0);
 }
 
 TEST(FlightJoin, SeparateFlightsStaySeparate) {
