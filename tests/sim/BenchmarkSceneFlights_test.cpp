@@ -20,6 +20,7 @@ struct SceneCase {
     bool alone = false;  ///< nothing else reported in the cloud
     const char* why = "";
     int flight = 0;  ///< which of the scene's flights
+    int min_steps = 0;  ///< the flight is reported with at least this many steps (whole flights)
 };
 
 std::ostream& operator<<(std::ostream& os, const SceneCase& c) {
@@ -45,6 +46,7 @@ TEST_P(MissedBefore, IsReportedOnceWithItsRiseAndRun) {
         EXPECT_LT(d.median_z_m, EvaluationParams().max_z_m);
         EXPECT_NEAR(s.step_height, truth.rise_m, c.rise_tolerance_m);
         EXPECT_NEAR(s.step_depth, truth.run_m, c.run_tolerance_m);
+        EXPECT_GE(static_cast<int>(s.steps.size()), c.min_steps);
     }
     EXPECT_EQ(on_truth, 1) << result.staircases.size() << " staircases in the cloud";
     if (c.alone) {
@@ -410,6 +412,21 @@ TEST(PitSteps, AreNoDescendingFlight) {
                 << "seed " << seed << " scene " << index;
     }
 }
+
+// Flights read as two chains with steps unseen between them (FlightJoin's continuation after
+// unseen steps): a level VLP-16 5 m from a 10-step flight of 0.107 m rises found steps 0-2 and 5-9
+// (dev5 r0166: a second detection, the first 3 steps only); a VLP-16 pitched down 24 deg above a
+// 2.1 m wide descending flight read steps 0-6 on one side and 8-10 on the other, that short
+// piece's heading 24 deg off (dev5 r0858: 7 steps and a second detection). Joined, the steps
+// between put back, each is one flight. A 16-step debris flight 7 m from a pitched HDL-32 (dev4
+// r0101) found as steps 0-3 and 5-13 joins to 14 steps only when the ramp test looks at its first
+// eight edges: over all fourteen, the floor seen under its upper part (RMS 0.66 m off the stair's
+// profile, 0.37 m off a slope) made it a ramp, and the flight was lost.
+INSTANTIATE_TEST_SUITE_P(
+    UnseenStepsBetweenChains, MissedBefore,
+    testing::Values(SceneCase{26026, 166, 0.01, 0.02, true, "level VLP-16, two unseen", 0, 10},
+                    SceneCase{26026, 858, 0.01, 0.03, true, "pitched VLP-16, side by side", 0, 11},
+                    SceneCase{25025, 101, 0.01, 0.02, false, "pitched HDL-32, debris", 0, 14}));
 
 }  // namespace
 }  // namespace stairmap
