@@ -428,5 +428,16 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{26026, 858, 0.01, 0.03, true, "pitched VLP-16, side by side", 0, 11},
                     SceneCase{25025, 101, 0.01, 0.02, false, "pitched HDL-32, debris", 0, 14}));
 
+// Descending flights in elevation maps cropped just beyond their foot: the floor below ends at
+// the crop in a line 7.95 m long, one run beyond the lowest nosing, read as one more nosing; it
+// stretched the partly seen edges to its extent (3.0 and 8.0 m wide, off the true nosings: a miss
+// and a false positive each) until a lowest edge over three times the others' length is dropped
+// (dropCropLineEnd): dev5 r0695, a flight starting three steps below the floor; dev5 r1023, one
+// starting on a landing a step below it.
+INSTANTIATE_TEST_SUITE_P(
+    CropLineBelow, MissedBefore,
+    testing::Values(SceneCase{26026, 695, 0.01, 0.02, true, "elevation map, 5 nosings", 0, 5},
+                    SceneCase{26026, 1023, 0.01, 0.02, true, "elevation map, 4 nosings", 0, 4}));
+
 }  // namespace
 }  // namespace stairmap
