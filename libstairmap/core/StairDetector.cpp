@@ -21,6 +21,7 @@
 #include "core/MissingNosings.h"
 #include "core/OverlappingFlights.h"
 #include "core/RayClearance.h"
+#include "core/ReverseReadings.h"
 #include "core/RiserHits.h"
 #include "core/RowLinesCache.h"
 #include "core/RowSegmentation.h"
@@ -934,6 +935,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     dropRampFlights(cloud_robot, params_, result.staircases);
     dropDescentsFromASlope(cloud_robot, floor, params_, result.staircases);
     dropSecondViews(result.staircases);  // the chains Algorithm 2 left: levels differ (dev3 r0042)
+    dropReverseReadings(result.staircases);  // a pit's flight read both ways (dev5 r0284)
     if (debug) debug->accepted = result.staircases;
     return result;
 }

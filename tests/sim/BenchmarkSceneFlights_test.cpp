@@ -439,5 +439,13 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{26026, 695, 0.01, 0.02, true, "elevation map, 5 nosings", 0, 5},
                     SceneCase{26026, 1023, 0.01, 0.02, true, "elevation map, 4 nosings", 0, 4}));
 
+// A flight rising out of a pit three steps below the robot's floor, 5.6 m from a level OS1-64
+// (dev5 r0284): found ascending with its six steps, and its lower three nosings read again as a
+// descending flight heading back towards the robot (a false positive) until one flight's edges
+// read both ways keep the longer reading only (dropReverseReadings).
+INSTANTIATE_TEST_SUITE_P(ReadBothWays, MissedBefore,
+                         testing::Values(SceneCase{26026, 284, 0.01, 0.02, true,
+                                                   "level OS1-64, flight out of a pit", 0, 6}));
+
 }  // namespace
 }  // namespace stairmap
