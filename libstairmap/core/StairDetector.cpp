@@ -381,7 +381,7 @@ void detectDirection(const PointCloud& cloud, const Candidates& cand,
     };
     for (const auto& chain : chains) {
         std::vector<LineSegment> edges = edgesOf(lines, chain);
-        if (!up) dropCropLineEnd(edges);  // an elevation map's crop on the floor below
+        if (!up) dropCropLineEnd(cloud, edges);  // an elevation map's crop on the floor below
         correct(edges);
         if (!up) prependFloorNosing(cand.cells, floor_z, p, edges);
         if (static_cast<int>(edges.size()) < p.min_steps &&

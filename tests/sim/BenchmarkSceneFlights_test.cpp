@@ -433,11 +433,14 @@ INSTANTIATE_TEST_SUITE_P(
 // stretched the partly seen edges to its extent (3.0 and 8.0 m wide, off the true nosings: a miss
 // and a false positive each) until a lowest edge over three times the others' length is dropped
 // (dropCropLineEnd): dev5 r0695, a flight starting three steps below the floor; dev5 r1023, one
-// starting on a landing a step below it.
+// starting on a landing a step below it. A lowest nosing seen whole under nosings seen in pieces
+// is kept, the floor seen beyond it (dev6 r0643, a level HDL-32 1 m from an open-riser flight: its
+// five steps; its run reads 3 cm long, as before).
 INSTANTIATE_TEST_SUITE_P(
     CropLineBelow, MissedBefore,
     testing::Values(SceneCase{26026, 695, 0.01, 0.02, true, "elevation map, 5 nosings", 0, 5},
-                    SceneCase{26026, 1023, 0.01, 0.02, true, "elevation map, 4 nosings", 0, 4}));
+                    SceneCase{26026, 1023, 0.01, 0.02, true, "elevation map, 4 nosings", 0, 4},
+                    SceneCase{28028, 643, 0.01, 0.035, true, "level HDL-32, whole lowest", 0, 5}));
 
 // A flight rising out of a pit three steps below the robot's floor, 5.6 m from a level OS1-64
 // (dev5 r0284): found ascending with its six steps, and its lower three nosings read again as a
