@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "core/StaircaseGeometry.h"
 
@@ -33,30 +35,26 @@ Staircase reading(int first, int last, StairDirection dir, double x0 = 5.5, doub
     return s;
 }
 
-TEST(ReverseReadings, TheShorterReadingOfOneFlightIsDropped) {
-    // a pit's flight: six nosings ascending, its lower three read descending towards the robot
-    std::vector<Staircase> flights = {reading(0, 2, StairDirection::Descending),
-                                      reading(0, 5, StairDirection::Ascending)};
+/// Nosings down_first..down_last read descending and up_first..up_last ascending: one is dropped;
+/// the direction and step count of the one kept.
+std::pair<StairDirection, std::size_t> kept(int down_first, int down_last, int up_first,
+                                            int up_last) {
+    std::vector<Staircase> flights = {reading(down_first, down_last, StairDirection::Descending),
+                                      reading(up_first, up_last, StairDirection::Ascending)};
     EXPECT_EQ(dropReverseReadings(flights), 1);
-    ASSERT_EQ(flights.size(), 1u);
-    EXPECT_EQ(flights[0].direction, StairDirection::Ascending);
-    EXPECT_EQ(flights[0].steps.size(), 6u);
+    if (flights.size() != 1u) return {StairDirection::Ascending, 0};
+    return {flights[0].direction, flights[0].steps.size()};
 }
 
-TEST(ReverseReadings, ALongerDescendingReadingIsKept) {
-    std::vector<Staircase> flights = {reading(0, 5, StairDirection::Descending),
-                                      reading(3, 5, StairDirection::Ascending)};
-    EXPECT_EQ(dropReverseReadings(flights), 1);
-    ASSERT_EQ(flights.size(), 1u);
-    EXPECT_EQ(flights[0].direction, StairDirection::Descending);
+TEST(ReverseReadings, TheShorterReadingOfOneFlightIsDropped) {
+    // a pit's flight: six nosings ascending, its lower three read descending towards the robot
+    EXPECT_EQ(kept(0, 2, 0, 5), std::make_pair(StairDirection::Ascending, std::size_t{6}));
+    // a longer descending reading is kept
+    EXPECT_EQ(kept(0, 5, 3, 5), std::make_pair(StairDirection::Descending, std::size_t{6}));
 }
 
 TEST(ReverseReadings, OnATieTheAscendingReadingIsKept) {
-    std::vector<Staircase> flights = {reading(0, 3, StairDirection::Descending),
-                                      reading(0, 3, StairDirection::Ascending)};
-    EXPECT_EQ(dropReverseReadings(flights), 1);
-    ASSERT_EQ(flights.size(), 1u);
-    EXPECT_EQ(flights[0].direction, StairDirection::Ascending);
+    EXPECT_EQ(kept(0, 3, 0, 3), std::make_pair(StairDirection::Ascending, std::size_t{4}));
 }
 
 TEST(ReverseReadings, FlightsSharingNoEdgesStay) {
