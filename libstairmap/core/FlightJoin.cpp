@@ -36,7 +36,9 @@ bool continues(const Staircase& near, const Staircase& far, const FlightJoinPara
     const StairEdge& last = near.steps.back();
     const StairEdge& first = far.steps.front();
     const double gap = h.dot((first.centre() - last.centre()).head<2>());
-    const bool shared = startsOnLastLevel(near, far, p);
+    // A chain starting on near's last level is never a piece after unseen steps (those lie a run
+    // or more beyond it), so only the adjacent case looks for one.
+    const bool shared = !after_unseen && startsOnLastLevel(near, far, p);
     if (!shared && (gap <= 0.0 || gap > max_runs * near.step_depth)) return false;
     const double up = near.direction == StairDirection::Ascending ? 1.0 : -1.0;
     const double climb = up * (first.centre().z() - last.centre().z());
@@ -143,11 +145,13 @@ int joinContinuedFlights(std::vector<Staircase>& found, const FlightJoinParams& 
         for (std::size_t j = 0; j < found.size(); ++j) {
             if (i == j) continue;
             const int unseen = unseenStepsBetween(found[i], found[j], params);
-            if (unseen < 0 && !continues(found[i], found[j], params, false)) continue;
-            if (unseen < 0 && startsOnLastLevel(found[i], found[j], params))
-                joinAtSharedLevel(found[i], found[j], params);
-            else if (unseen >= 0)
+            if (unseen >= 0)
                 appendAfterUnseen(found[i], found[j], unseen);
+            else if (!continues(found[i], found[j], params, false))
+                continue;
+            else if (startsOnLastLevel(found[i], found[j], params))
+                joinAtSharedLevel(found[i], found[j], params);
+            // otherwise far is a corrupted view of near's far part: dropped
             found.erase(found.begin() + static_cast<std::ptrdiff_t>(j));
             ++removed;
             return removed + joinContinuedFlights(found, params);  // indices moved: start over
