@@ -110,9 +110,29 @@ TEST(FlightJoin, AContinuationAfterUnseenStepsIsAppendedWithThemPutBack) {
     EXPECT_NEAR(found[0].step_depth, kRun, 1e-9);
 }
 
+TEST(FlightJoin, FourUnseenStepsArePutBack) {
+    // a pitched OS0-128's rings left steps 4-7 of a 15-step flight unseen (dev5 r0626)
+    std::vector<Staircase> found = {flight(0, 3), flight(8, 12)};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    ASSERT_EQ(found[0].steps.size(), 13u);
+    for (int k = 4; k <= 7; ++k) {
+        EXPECT_EQ(found[0].steps[k].num_points, 0) << "step " << k;
+        EXPECT_NEAR(found[0].steps[k].centre().x(), 1.5 + k * kRun, 1e-9) << "step " << k;
+        EXPECT_NEAR(found[0].steps[k].centre().z(), -0.33 + k * kRise, 1e-9) << "step " << k;
+    }
+    EXPECT_NEAR(found[0].step_height, kRise, 1e-9);
+    EXPECT_NEAR(found[0].step_depth, kRun, 1e-9);
+}
+
 TEST(FlightJoin, MoreUnseenStepsThanAllowedKeepTheChainsApart) {
-    std::vector<Staircase> found = {flight(0, 2), flight(6, 9)};  // three unseen, two allowed
+    std::vector<Staircase> found = {flight(0, 2), flight(8, 11)};  // five unseen, four allowed
     EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 0);
+    EXPECT_EQ(found.size(), 2u);
+    FlightJoinParams two;
+    two.max_unseen_steps = 2;
+    found = {flight(0, 2), flight(6, 9)};  // three unseen, two allowed
+    EXPECT_EQ(joinContinuedFlights(found, two), 0);
     EXPECT_EQ(found.size(), 2u);
 }
 
