@@ -70,17 +70,60 @@ bool onNosingLine(const Staircase& near, const Staircase& far, const FlightJoinP
     return true;
 }
 
+/// Largest residual of the least-squares line through (x[k], v[k]), and its slope.
+std::pair<double, double> lineFitResidualAt(const std::vector<double>& x,
+                                            const std::vector<double>& v) {
+    const double n = static_cast<double>(x.size());
+    double mx = 0.0, mv = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        mx += x[k];
+        mv += v[k];
+    }
+    mx /= n;
+    mv /= n;
+    double num = 0.0, den = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        num += (x[k] - mx) * (v[k] - mv);
+        den += (x[k] - mx) * (x[k] - mx);
+    }
+    const double slope = den > 0.0 ? num / den : 0.0;
+    double worst = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k)
+        worst = std::max(worst, std::abs(v[k] - mv - slope * (x[k] - mx)));
+    return {worst, slope};
+}
+
+/// Do near's edges (steps 0..n-1) and far's (steps n - 1 + first, ...) lie on one nosing line
+/// fitted over both: every edge within the height tolerance of one rise (as onOneRiseAndRun) and
+/// within a quarter run of one run (the index pinned)? The fit absorbs part of an offset between
+/// the two: a far chain half a 0.17 m rise off its place fits within 3.6 cm. near's own rise may
+/// read off by a few mm over its steps, enough to put a far chain five steps on off its line (dev6
+/// r0478: 0.141 m read on 0.132 m rises, 4.5 cm off at the far chain's top edge).
+bool onCommonNosingLine(const Staircase& near, const Staircase& far, const FlightJoinParams& p,
+                        int first) {
+    const Eigen::Vector2d h(std::cos(near.heading_rad), std::sin(near.heading_rad));
+    std::vector<double> index, z, along;
+    const auto add = [&](const StairEdge& e, double k) {
+        index.push_back(k);
+        z.push_back(e.centre().z());
+        along.push_back(h.dot(e.centre().head<2>()));
+    };
+    const double last = static_cast<double>(near.steps.size()) - 1.0;
+    for (std::size_t k = 0; k < near.steps.size(); ++k) add(near.steps[k], static_cast<double>(k));
+    for (std::size_t k = 0; k < far.steps.size(); ++k)
+        add(far.steps[k], last + first + static_cast<double>(k));
+    const auto [z_worst, rise] = lineFitResidualAt(index, z);
+    const auto [along_worst, run] = lineFitResidualAt(index, along);
+    const double up = near.direction == StairDirection::Ascending ? 1.0 : -1.0;
+    return up * rise > 0.0 && run > 0.0 && z_worst <= p.height_tolerance_m &&
+           along_worst <= 0.25 * run;
+}
+
 /// Largest residual of the least-squares line through (k, v[k]), and its slope.
 std::pair<double, double> lineFitResidual(const std::vector<double>& v) {
-    const double slope = slopeAgainstIndex(v);
-    double mean_v = 0.0;
-    for (double x : v) mean_v += x;
-    mean_v /= static_cast<double>(v.size());
-    const double mean_k = 0.5 * static_cast<double>(v.size() - 1);
-    double worst = 0.0;
-    for (std::size_t k = 0; k < v.size(); ++k)
-        worst = std::max(worst, std::abs(v[k] - mean_v - slope * (static_cast<double>(k) - mean_k)));
-    return {worst, slope};
+    std::vector<double> k(v.size());
+    for (std::size_t i = 0; i < k.size(); ++i) k[i] = static_cast<double>(i);
+    return lineFitResidualAt(k, v);
 }
 
 /// Is `s` one flight: every nosing on one rise (within the height tolerance) and on one run
@@ -116,7 +159,8 @@ void joinAtSharedLevel(Staircase& near, const Staircase& far, const FlightJoinPa
 int unseenStepsBetween(const Staircase& near, const Staircase& far, const FlightJoinParams& p) {
     if (!continues(near, far, p, true)) return -1;
     for (int unseen = 0; unseen <= p.max_unseen_steps; ++unseen)
-        if (onNosingLine(near, far, p, unseen + 1)) return unseen;
+        if (onNosingLine(near, far, p, unseen + 1) || onCommonNosingLine(near, far, p, unseen + 1))
+            return unseen;
     return -1;
 }
 

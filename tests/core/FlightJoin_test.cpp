@@ -125,6 +125,30 @@ TEST(FlightJoin, FourUnseenStepsArePutBack) {
     EXPECT_NEAR(found[0].step_depth, kRun, 1e-9);
 }
 
+TEST(FlightJoin, AContinuationOnTheCommonLineIsAppendedWhenTheNearRiseReadsOff) {
+    // the near chain's rise reads 6 % high (0.180 m on 0.170 m): five steps on, the far chain
+    // lies 8 cm below its line, but both lie on the line fitted over the two (dev6 r0478)
+    Staircase near = flight(0, 4);
+    for (std::size_t k = 0; k < near.steps.size(); ++k) {
+        near.steps[k].start.z() += 0.01 * k;
+        near.steps[k].end.z() += 0.01 * k;
+    }
+    estimateGeometry(near);
+    std::vector<Staircase> found = {near, flight(5, 9)};
+    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].steps.size(), 10u);
+    EXPECT_NEAR(found[0].step_height, kRise, 0.005);
+}
+
+TEST(FlightJoin, AChainOffTheCommonLineIsNotAppended) {
+    // the far chain 0.7 rise above the near one's line (5 cm off the line fitted over both):
+    // another surface, not these steps
+    std::vector<Staircase> found = {flight(0, 4), flight(5, 9, 0.0, 1.5, 0.7 * kRise)};
+    joinContinuedFlights(found, FlightJoinParams{});
+    for (const Staircase& s : found) EXPECT_LE(s.steps.size(), 5u);
+}
+
 TEST(FlightJoin, MoreUnseenStepsThanAllowedKeepTheChainsApart) {
     std::vector<Staircase> found = {flight(0, 2), flight(8, 11)};  // five unseen, four allowed
     EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 0);

@@ -424,13 +424,17 @@ TEST(PitSteps, AreNoDescendingFlight) {
 // profile, 0.37 m off a slope) made it a ramp, and the flight was lost. A 15-step flight 4 m from a
 // pitched OS0-128 (dev5 r0626, the scene's second flight) read as chains of four and five steps,
 // four unseen between: two flights (a false positive) until four unseen steps may be put back.
+// A 12-step open-riser flight 6.7 m from a level HDL-32 (dev6 r0478) read as two chains of five,
+// the near one's rise 0.141 m on 0.132 m rises: the far chain lay 4.5 cm off its line at its top,
+// a second flight, until the two are joined when all ten edges lie on one line fitted over both.
 INSTANTIATE_TEST_SUITE_P(
     UnseenStepsBetweenChains, MissedBefore,
     testing::Values(SceneCase{26026, 166, 0.01, 0.02, true, "level VLP-16, two unseen", 0, 10},
                     SceneCase{26026, 858, 0.01, 0.03, true, "pitched VLP-16, side by side", 0, 11},
                     SceneCase{25025, 101, 0.01, 0.02, false, "pitched HDL-32, debris", 0, 14},
-                    SceneCase{26026, 626, 0.01, 0.02, false, "pitched OS0-128, four unseen", 1,
-                              13}));
+                    SceneCase{26026, 626, 0.01, 0.02, false, "pitched OS0-128, four unseen", 1, 13},
+                    SceneCase{28028, 478, 0.01, 0.02, false, "level HDL-32, near rise read off", 0,
+                              10}));
 
 // Descending flights in elevation maps cropped just beyond their foot: the floor below ends at
 // the crop in a line 7.95 m long, one run beyond the lowest nosing, read as one more nosing; it
