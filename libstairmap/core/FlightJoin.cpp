@@ -70,29 +70,6 @@ bool onNosingLine(const Staircase& near, const Staircase& far, const FlightJoinP
     return true;
 }
 
-/// Largest residual of the least-squares line through (x[k], v[k]), and its slope.
-std::pair<double, double> lineFitResidualAt(const std::vector<double>& x,
-                                            const std::vector<double>& v) {
-    const double n = static_cast<double>(x.size());
-    double mx = 0.0, mv = 0.0;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-        mx += x[k];
-        mv += v[k];
-    }
-    mx /= n;
-    mv /= n;
-    double num = 0.0, den = 0.0;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-        num += (x[k] - mx) * (v[k] - mv);
-        den += (x[k] - mx) * (x[k] - mx);
-    }
-    const double slope = den > 0.0 ? num / den : 0.0;
-    double worst = 0.0;
-    for (std::size_t k = 0; k < x.size(); ++k)
-        worst = std::max(worst, std::abs(v[k] - mv - slope * (x[k] - mx)));
-    return {worst, slope};
-}
-
 /// Do near's edges (steps 0..n-1) and far's (steps n - 1 + first, ...) lie on one nosing line
 /// fitted over both: every edge within the height tolerance of one rise (as onOneRiseAndRun) and
 /// within a quarter run of one run (the index pinned)? The fit absorbs part of an offset between
@@ -112,18 +89,19 @@ bool onCommonNosingLine(const Staircase& near, const Staircase& far, const Fligh
     for (std::size_t k = 0; k < near.steps.size(); ++k) add(near.steps[k], static_cast<double>(k));
     for (std::size_t k = 0; k < far.steps.size(); ++k)
         add(far.steps[k], last + first + static_cast<double>(k));
-    const auto [z_worst, rise] = lineFitResidualAt(index, z);
-    const auto [along_worst, run] = lineFitResidualAt(index, along);
+    double rise = 0.0, run = 0.0;
+    const double z_worst = lineFitError(index, z, &rise);
+    const double along_worst = lineFitError(index, along, &run);
     const double up = near.direction == StairDirection::Ascending ? 1.0 : -1.0;
     return up * rise > 0.0 && run > 0.0 && z_worst <= p.height_tolerance_m &&
            along_worst <= 0.25 * run;
 }
 
-/// Largest residual of the least-squares line through (k, v[k]), and its slope.
-std::pair<double, double> lineFitResidual(const std::vector<double>& v) {
-    std::vector<double> k(v.size());
-    for (std::size_t i = 0; i < k.size(); ++i) k[i] = static_cast<double>(i);
-    return lineFitResidualAt(k, v);
+/// 0, 1, ..., n - 1: the indices of n edges.
+std::vector<double> indices(std::size_t n) {
+    std::vector<double> k(n);
+    for (std::size_t i = 0; i < n; ++i) k[i] = static_cast<double>(i);
+    return k;
 }
 
 /// Is `s` one flight: every nosing on one rise (within the height tolerance) and on one run
@@ -136,8 +114,10 @@ bool onOneRiseAndRun(const Staircase& s, const FlightJoinParams& p) {
         z.push_back(e.centre().z());
         along.push_back(h.dot(e.centre().head<2>()));
     }
-    const double z_worst = lineFitResidual(z).first;
-    const auto [along_worst, run] = lineFitResidual(along);
+    const std::vector<double> k = indices(z.size());
+    double run = 0.0;
+    const double z_worst = lineFitError(k, z);
+    const double along_worst = lineFitError(k, along, &run);
     return z_worst <= p.height_tolerance_m && along_worst <= 0.5 * std::abs(run);
 }
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 #include <vector>
 
+#include "core/StaircaseGeometry.h"
 #include "core/UpperMedian.h"
 
 namespace stairmap {
@@ -90,26 +90,6 @@ std::vector<double> positionsAcross(const std::vector<LineSegment>& edges) {
     for (std::size_t i = 1; i < edges.size(); ++i)
         at[i] = at[i - 1] + spacing(edges[i - 1], edges[i]);
     return at;
-}
-
-/// Largest |v - (a + b k)| of the least-squares line through (k, v); +inf when k is constant.
-double lineFitError(const std::vector<double>& k, const std::vector<double>& v, double* slope) {
-    const double n = static_cast<double>(k.size());
-    double sk = 0, sv = 0, skk = 0, skv = 0;
-    for (std::size_t i = 0; i < k.size(); ++i) {
-        sk += k[i];
-        sv += v[i];
-        skk += k[i] * k[i];
-        skv += k[i] * v[i];
-    }
-    const double det = n * skk - sk * sk;
-    if (!(det > 0)) return std::numeric_limits<double>::infinity();
-    const double b = (n * skv - sk * sv) / det, a = (sv - b * sk) / n;
-    if (slope) *slope = b;
-    double worst = 0;
-    for (std::size_t i = 0; i < k.size(); ++i)
-        worst = std::max(worst, std::abs(v[i] - a - b * k[i]));
-    return worst;
 }
 
 /// The levels (from 0) of positions `at` on the widest comb of one run in [min_run, max_run]

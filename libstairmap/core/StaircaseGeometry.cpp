@@ -102,6 +102,25 @@ double slopeAgainstIndex(const std::vector<double>& values) {
     return num / den;
 }
 
+double lineFitError(const std::vector<double>& k, const std::vector<double>& v, double* slope) {
+    const double n = static_cast<double>(k.size());
+    double sk = 0, sv = 0, skk = 0, skv = 0;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+        sk += k[i];
+        sv += v[i];
+        skk += k[i] * k[i];
+        skv += k[i] * v[i];
+    }
+    const double det = n * skk - sk * sk;
+    if (!(det > 0)) return std::numeric_limits<double>::infinity();
+    const double b = (n * skv - sk * sv) / det, a = (sv - b * sk) / n;
+    if (slope) *slope = b;
+    double worst = 0;
+    for (std::size_t i = 0; i < k.size(); ++i)
+        worst = std::max(worst, std::abs(v[i] - a - b * k[i]));
+    return worst;
+}
+
 double medianPairwiseSlope(const std::vector<double>& values, const std::vector<char>& seen,
                            std::size_t min_pairs) {
     std::vector<double> slopes;

@@ -38,6 +38,11 @@ std::pair<double, double> lateralExtent(const Staircase& s, const Eigen::Vector2
 /// Least-squares slope of values[i] against the index i (0 for fewer than two values).
 double slopeAgainstIndex(const std::vector<double>& values);
 
+/// Largest |v[i] - (a + b x[i])| of the least-squares line through (x[i], v[i]), its slope b into
+/// `slope` when given; +inf when x is constant. x and v have the same size.
+double lineFitError(const std::vector<double>& x, const std::vector<double>& v,
+                    double* slope = nullptr);
+
 /// Theil-Sen slope of values[i] against the index i: the median (of an even count the upper
 /// middle one) of (values[j] - values[i]) / (j - i) over the pairs i < j with both `seen`. One
 /// value off moves it in few pairs, where it tilts a least-squares slope. slopeAgainstIndex over

@@ -94,14 +94,14 @@ TEST(FlightJoin, OfChainsMeetingAtALevelOnDifferentRisesTheLongerIsKept) {
     EXPECT_NEAR(found[0].steps.front().centre().z(), -0.33 + 3 * kRise, 1e-9);
 }
 
-TEST(FlightJoin, AContinuationAfterUnseenStepsIsAppendedWithThemPutBack) {
-    // steps 3 and 4 unseen (a far LiDAR's rings skipped them): the far chain lies on the near
-    // one's nosing line at its own index
-    std::vector<Staircase> found = {flight(0, 2), flight(5, 9)};
+/// Joins flight(0, near_last) and flight(far_first, last): one flight of steps 0..last, the steps
+/// between put back unseen on the flight's nosing line.
+void expectJoinedWithUnseenPutBack(int near_last, int far_first, int last) {
+    std::vector<Staircase> found = {flight(0, near_last), flight(far_first, last)};
     EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
     ASSERT_EQ(found.size(), 1u);
-    ASSERT_EQ(found[0].steps.size(), 10u);
-    for (int k : {3, 4}) {
+    ASSERT_EQ(found[0].steps.size(), static_cast<std::size_t>(last + 1));
+    for (int k = near_last + 1; k < far_first; ++k) {
         EXPECT_EQ(found[0].steps[k].num_points, 0) << "step " << k;
         EXPECT_NEAR(found[0].steps[k].centre().x(), 1.5 + k * kRun, 1e-9) << "step " << k;
         EXPECT_NEAR(found[0].steps[k].centre().z(), -0.33 + k * kRise, 1e-9) << "step " << k;
@@ -110,19 +110,15 @@ TEST(FlightJoin, AContinuationAfterUnseenStepsIsAppendedWithThemPutBack) {
     EXPECT_NEAR(found[0].step_depth, kRun, 1e-9);
 }
 
+TEST(FlightJoin, AContinuationAfterUnseenStepsIsAppendedWithThemPutBack) {
+    // steps 3 and 4 unseen (a far LiDAR's rings skipped them): the far chain lies on the near
+    // one's nosing line at its own index
+    expectJoinedWithUnseenPutBack(2, 5, 9);
+}
+
 TEST(FlightJoin, FourUnseenStepsArePutBack) {
     // a pitched OS0-128's rings left steps 4-7 of a 15-step flight unseen (dev5 r0626)
-    std::vector<Staircase> found = {flight(0, 3), flight(8, 12)};
-    EXPECT_EQ(joinContinuedFlights(found, FlightJoinParams{}), 1);
-    ASSERT_EQ(found.size(), 1u);
-    ASSERT_EQ(found[0].steps.size(), 13u);
-    for (int k = 4; k <= 7; ++k) {
-        EXPECT_EQ(found[0].steps[k].num_points, 0) << "step " << k;
-        EXPECT_NEAR(found[0].steps[k].centre().x(), 1.5 + k * kRun, 1e-9) << "step " << k;
-        EXPECT_NEAR(found[0].steps[k].centre().z(), -0.33 + k * kRise, 1e-9) << "step " << k;
-    }
-    EXPECT_NEAR(found[0].step_height, kRise, 1e-9);
-    EXPECT_NEAR(found[0].step_depth, kRun, 1e-9);
+    expectJoinedWithUnseenPutBack(3, 8, 12);
 }
 
 TEST(FlightJoin, AContinuationOnTheCommonLineIsAppendedWhenTheNearRiseReadsOff) {
