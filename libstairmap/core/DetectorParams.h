@@ -129,6 +129,11 @@ struct DetectorParams {
     /// level LiDAR below the flight's upper treads sees their risers, not their treads (dev3
     /// r0071, an HDL-32 6 m away). A stage's platform shows no riser there.
     bool continue_by_next_riser = true;
+    /// An ascending chain whose lines stand one to three runs apart while its heights, read from
+    /// riser hits above the sensor, put them on other levels (a far LiDAR's rings' spacing) is
+    /// levelled by its lines' spacing, the nosings stepped over put back (MissingNosings.h,
+    /// fillNosingsBySpacing; dev3 r0288, a level VLP-16 7.4 m away); off: by its heights only.
+    bool level_by_line_spacing = true;
     /// [-] an ascending straight flight whose points between its first and last edge lie closer
     /// (RMS) to one sloped line than this fraction of their distance to its stair profile is a
     /// ramp's ring lines and dropped (FlightContinuation.h, treadsRiseAlongTheRun); 0 = off. The

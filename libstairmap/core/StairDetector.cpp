@@ -371,7 +371,7 @@ void detectDirection(const PointCloud& cloud, const Candidates& cand,
         }
         // edges the search stepped over: by the lines' spacing where riser hits' heights
         // disagree (ascending flights: a LiDAR looks down at the treads of descending ones)
-        if (!up || fillNosingsBySpacing(edges, spacing_levels) == 0)
+        if (!up || !p.level_by_line_spacing || fillNosingsBySpacing(edges, spacing_levels) == 0)
             fillMissingNosings(edges, p.min_step_height_m);
         return edges;
     };

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <ostream>
 #include <utility>
 
@@ -85,6 +86,25 @@ INSTANTIATE_TEST_SUITE_P(
 INSTANTIATE_TEST_SUITE_P(RingHitsLevelledBySpacing, MissedBefore,
                          testing::Values(SceneCase{4004, 288, 0.01, 0.03, true,
                                                    "VLP-16 at 7.4 m, steps 4, 6, 7"}));
+
+// The INI switch reaches the detector: with level_by_line_spacing off the same flight reads the
+// rings' spacing again (0.28 m rises where it has 0.20 m).
+TEST(LevelByLineSpacing, OffTheChainReadsItsHeightsOnly) {
+    const sim::RandomCloud scene = test::benchmarkScene(4004, 288);
+    ASSERT_FALSE(scene.truth.staircases.empty());
+    const StaircaseTruth& truth = scene.truth.staircases[0];
+    DetectorParams off;
+    off.level_by_line_spacing = false;
+    const DetectionResult result =
+        StairDetector(off).detect(scene.cloud, scene.truth.observer_floor_z);
+    int on_flight = 0;
+    for (const Staircase& s : result.staircases) {
+        if (!test::reportsFlight(s, truth)) continue;
+        ++on_flight;
+        EXPECT_GT(std::abs(s.step_height - truth.rise_m), 0.04);
+    }
+    EXPECT_EQ(on_flight, 1) << result.staircases.size() << " staircases";
+}
 
 // A 17-level spiral 3.3 m from a level HDL-32 (dev2 r0066): levels 0-4 lie below the sensor and
 // are found with their helix; the levels above it are seen by riser hits only, at the rings'
