@@ -102,22 +102,22 @@ double slopeAgainstIndex(const std::vector<double>& values) {
     return num / den;
 }
 
-double lineFitError(const std::vector<double>& k, const std::vector<double>& v, double* slope) {
-    const double n = static_cast<double>(k.size());
-    double sk = 0, sv = 0, skk = 0, skv = 0;
-    for (std::size_t i = 0; i < k.size(); ++i) {
-        sk += k[i];
+double lineFitError(const std::vector<double>& x, const std::vector<double>& v, double* slope) {
+    const double n = static_cast<double>(x.size());
+    double sx = 0, sv = 0, sxx = 0, sxv = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        sx += x[i];
         sv += v[i];
-        skk += k[i] * k[i];
-        skv += k[i] * v[i];
+        sxx += x[i] * x[i];
+        sxv += x[i] * v[i];
     }
-    const double det = n * skk - sk * sk;
+    const double det = n * sxx - sx * sx;
     if (!(det > 0)) return std::numeric_limits<double>::infinity();
-    const double b = (n * skv - sk * sv) / det, a = (sv - b * sk) / n;
+    const double b = (n * sxv - sx * sv) / det, a = (sv - b * sx) / n;
     if (slope) *slope = b;
     double worst = 0;
-    for (std::size_t i = 0; i < k.size(); ++i)
-        worst = std::max(worst, std::abs(v[i] - a - b * k[i]));
+    for (std::size_t i = 0; i < x.size(); ++i)
+        worst = std::max(worst, std::abs(v[i] - a - b * x[i]));
     return worst;
 }
 
