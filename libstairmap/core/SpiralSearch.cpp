@@ -382,6 +382,28 @@ std::vector<Radial> withExtraLevels(const SpiralLines& sl, const Helix& h, std::
     return in;
 }
 
+/// Whether every gap between two seen levels turns by as many steps as it rises (within
+/// `tolerance` steps), the step being the median turn between neighbouring seen levels. A helix
+/// through nosings below and a tread's back edges above (each one step ahead of its nosing) reads
+/// too large a step angle, puts an unseen level back between the two and indexes every back edge
+/// at its own height but one nosing's angle further on: across that gap it turns one step more
+/// than it rises (dev5 r1113: 98.8 deg over two levels of 32.5 deg). True when fewer than two
+/// pairs of neighbouring levels are seen.
+bool gapsTurnAsTheyRise(const std::vector<std::pair<int, Radial>>& idx, double tolerance) {
+    std::vector<double> turns;
+    for (std::size_t i = 1; i < idx.size(); ++i)
+        if (idx[i].first - idx[i - 1].first == 1)
+            turns.push_back(wrapAngle(idx[i].second.phi - idx[i - 1].second.phi));
+    if (turns.size() < 2) return true;
+    const double step = upperMedian(turns);
+    for (std::size_t i = 1; i < idx.size(); ++i) {
+        const int levels = idx[i].first - idx[i - 1].first;
+        const double turn = wrapAngle(idx[i].second.phi - idx[i - 1].second.phi);
+        if (levels > 1 && std::abs(turn / step - levels) > tolerance) return false;
+    }
+    return true;
+}
+
 /// The spiral of one axis candidate, if its levels make a stair (empty edges otherwise).
 SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vector<Radial>& in,
                          const SpiralSearchParams& p) {
@@ -396,6 +418,7 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
     if (first_z < p.min_first_height_m || first_z > p.max_first_height_m) return f;
     const double step_angle = std::abs(h.omega) * rise;
     if (step_angle < p.min_step_angle_deg * kDeg || step_angle > p.max_step_angle_deg * kDeg) return f;
+    if (!gapsTurnAsTheyRise(idx, p.gap_turn_tolerance_steps)) return f;
     std::vector<double> outers;
     double inner = 1e9;
     for (const auto& [k, r] : idx) outers.push_back(r.far), inner = std::min(inner, r.near);

@@ -227,6 +227,33 @@ TEST(SpiralSearch, TurnsBackEdgesOntoTheirNosings) {
     for (int k = 1; k <= 7; ++k) EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
 }
 
+TEST(SpiralSearch, BackEdgesAboveAnUnseenLevelAreNotReadAsNosingsOneStepOn) {
+    // Nosings 1-4 below a level HDL-32, level 5 unseen, levels 6-9 seen by their back edges only
+    // (at height z_k, the angle of nosing k+1), every line read 3-7 cm low as in dev5 r1113. A
+    // helix through both, 9 levels with level 5 put back, reads nosings 6-9 a step further on (its
+    // gap turns three steps over two levels): one rise off in height at their places.
+    Helix h;
+    h.step = 32.8 * kDeg;
+    h.rise = 0.121;
+    h.inner = 0.15;
+    h.outer = 0.77;
+    h.phi0 = -139.0 * kDeg;
+    std::vector<LineSegment> front, back;
+    // [m] read low; level 5 is put back between its neighbours' readings
+    const double low[] = {0, 0.027, 0.053, 0.064, 0.067, 0.0525, 0.038, 0.031, 0.038, 0.046};
+    for (int k : {1, 2, 3, 4}) front.push_back(radialLine(h, h.angleOf(k), h.zOf(k) - low[k]));
+    for (int k : {6, 7, 8, 9}) back.push_back(radialLine(h, h.angleOf(k + 1), h.zOf(k) - low[k]));
+    const auto spirals = findSpirals(front, back, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 9u);
+    EXPECT_NEAR(f.step_angle_rad, h.step, 1.5 * kDeg);
+    for (int k = 1; k <= 9; ++k) {
+        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k) - low[k], 0.03) << k;
+        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.05) << k;
+    }
+}
+
 TEST(SpiralSearch, SettlesOnTheNosingsWhenBothAreSeenAtSomeLevels) {
     // A gently turning spiral (21 deg per step): the lowest level seen by its back edge only, two
     // by their nosings, the top two by both. A first helix through all of them (9 deg tolerance)

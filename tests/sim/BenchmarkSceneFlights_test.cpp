@@ -271,6 +271,19 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{7007, 47, 0.01, 0.02, true, "elevation map, 2 pieces"},
                     SceneCase{7007, 292, 0.01, 0.02, true, "pitched OS1-64, 2 pieces"}));
 
+// Spirals whose lower levels show their nosings and whose upper levels, above the sensor, only
+// their treads' back edges (one step angle ahead), with a level unseen between: a level HDL-32
+// 4.7 m and 3.1 m away (dev5 r1113, r0935) and OS1-64s pitched down 24-26 deg 7 m away (dev5
+// r0622, dev6 r0333). A helix through nosings below and back edges above, too large a step angle,
+// read the upper levels one rise low at their places (a miss and a false positive each) until a
+// gap must turn as many steps as it rises (SpiralSearchParams::gap_turn_tolerance_steps).
+INSTANTIATE_TEST_SUITE_P(
+    SpiralBackEdgesAboveAGap, MissedBefore,
+    testing::Values(SceneCase{26026, 1113, 0.01, 0.03, true, "level HDL-32 at 4.7 m"},
+                    SceneCase{26026, 935, 0.01, 0.03, true, "level HDL-32 at 3.1 m"},
+                    SceneCase{26026, 622, 0.01, 0.03, true, "pitched OS1-64 at 7 m"},
+                    SceneCase{28028, 333, 0.01, 0.03, true, "pitched OS1-64, dev6"}));
+
 TEST(DashedNosingPass, IsWhatFindsFlightsSeenInDashes) {
     for (const auto& [seed, index] : {std::pair{1001, 126}, {4004, 78}, {3003, 106}, {4004, 166}}) {
         const sim::RandomCloud scene = test::benchmarkScene(seed, index);
