@@ -159,10 +159,10 @@ void highestPoints(const PointCloud& cloud, const TopViewParams& p, const GridBo
         const float sx = keep ? gx : g_lo, sy = keep ? gy : g_lo, sz = keep ? q.z() : lo;
         const int ix = static_cast<int>(sx), iy = static_cast<int>(sy);
         const auto z_q = static_cast<std::uint64_t>(std::min(code.encode(sz), kMaxQuanta));
-        const auto fx =
-            static_cast<std::uint64_t>(std::min(static_cast<int>((sx - ix) * kFraction), 65535));
-        const auto fy =
-            static_cast<std::uint64_t>(std::min(static_cast<int>((sy - iy) * kFraction), 65535));
+        // sx - ix is sx's fractional part, exact in float and below 1, so times 2^16 it stays
+        // below 65536: no clamp needed.
+        const auto fx = static_cast<std::uint64_t>(static_cast<int>((sx - ix) * kFraction));
+        const auto fy = static_cast<std::uint64_t>(static_cast<int>((sy - iy) * kFraction));
         const std::uint64_t word = keep ? (z_q << 32 | fx << 16 | fy) : 0u;
         const int col = iy * box.nx + ix;
         grid[col].bits = std::max(grid[col].bits, word);
@@ -275,13 +275,15 @@ std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy,
            (back.drop && !front_spill ? kBackDrop : 0);
 }
 
-/// Clears the marked segments of the grid and the marks when buildTopView returns (or throws).
+/// Clears the first `segments` segments' marked columns and their marks when buildTopView returns
+/// (or throws).
 struct ClearOnExit {
     std::vector<Column>& grid;
     std::vector<std::uint8_t>& written;
+    std::size_t segments;
     ~ClearOnExit() {
         const std::size_t n = grid.size();
-        for (std::size_t s = 0; s < written.size(); ++s) {
+        for (std::size_t s = 0; s < segments; ++s) {
             if (!written[s]) continue;
             const std::size_t first = s << kSegmentShift;
             Column* const segment = grid.data() + first;
@@ -291,9 +293,16 @@ struct ClearOnExit {
                 std::memset(segment, 0, (n - first) * sizeof(Column));
             }
         }
-        std::memset(written.data(), 0, written.size());
+        std::memset(written.data(), 0, segments);
     }
 };
+
+/// Whether the 8 segment marks from `s` on are all clear (one 8-byte load).
+inline bool eightClear(const std::uint8_t* marks, std::size_t s) {
+    std::uint64_t word;
+    std::memcpy(&word, marks + s, sizeof word);
+    return word == 0;
+}
 
 }  // namespace
 
@@ -311,9 +320,12 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p,
     std::vector<Column>& grid = tl_grid;
     std::vector<std::uint8_t>& written = tl_written;
     const std::size_t n = static_cast<std::size_t>(box.nx) * box.ny;
-    grid.resize(n);  // new elements are zero; the others were cleared by the previous call
-    written.resize((n + kSegment - 1) >> kSegmentShift);
-    const ClearOnExit clear{grid, written};
+    const std::size_t segments = (n + kSegment - 1) >> kSegmentShift;
+    // Grown, never shrunk: a vector grown again after a shrink zero-fills the difference, a
+    // sixteenth of the top view's time when cloud extents alternate. Columns beyond n stay zero.
+    if (grid.size() < n) grid.resize(n);
+    if (written.size() < segments) written.resize(segments);
+    const ClearOnExit clear{grid, written, segments};
     highestPoints(cloud, p, box, code, grid.data(), written.data());
     // Read through a local pointer: the scan's push_back could alias the thread-local vector, so
     // grid.data() would be loaded again (through the thread pointer) for every column.
@@ -327,20 +339,27 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p,
     t.ground_lo = codeClamped(code, p.ground_z_lo);
     t.ground_hi = codeClamped(code, p.ground_z_hi);
     const float leaf = 1.0f / box.inv_leaf;
-    for (int iy = 0; iy < box.ny; ++iy) {
-        // Direction from the robot, taken at the column centre (grid-aligned, no point noise).
-        const float cy = box.y0 + (iy + 0.5f) * leaf;
-        for (int ix = 0, col = iy * box.nx; ix < box.nx; ++ix, ++col) {
-            if (!marks[col >> kSegmentShift]) {  // most segments are empty: skip to the next one
-                const int skip = kSegment - 1 - (col & (kSegment - 1));
-                ix += skip;
-                col += skip;
-                continue;
-            }
+    // Marked segments only, in memory (row-major) order; the row follows the column index.
+    int iy = 0;
+    std::size_t row_start = 0;
+    for (std::size_t s = 0; s < segments; ++s) {
+        if ((s & 7) == 0 && s + 8 <= segments && eightClear(marks, s)) {  // most are empty
+            s += 7;
+            continue;
+        }
+        if (!marks[s]) continue;
+        const std::size_t end = std::min((s + 1) << kSegmentShift, n);
+        for (std::size_t col = s << kSegmentShift; col < end; ++col) {
             const Column c = columns[col];
             if (c.bits == 0) continue;
-            const float cx = box.x0 + (ix + 0.5f) * leaf;
-            const std::uint8_t flags = classify(columns, col, box.nx, cx, cy, t);
+            while (col >= row_start + static_cast<std::size_t>(box.nx)) {
+                row_start += box.nx;
+                ++iy;
+            }
+            const int ix = static_cast<int>(col - row_start);
+            // Direction from the robot, taken at the column centre (grid-aligned, no point noise).
+            const float cx = box.x0 + (ix + 0.5f) * leaf, cy = box.y0 + (iy + 0.5f) * leaf;
+            const std::uint8_t flags = classify(columns, static_cast<int>(col), box.nx, cx, cy, t);
             if (flags == 0) continue;
             cells.push_back({box.x0 + (ix + (c.fx() + 0.5f) / kFraction) * leaf,
                              box.y0 + (iy + (c.fy() + 0.5f) / kFraction) * leaf,
