@@ -17,12 +17,11 @@
 // them, nosings and back edges are told apart by refitting the helix to both (each at its own
 // height) until every line sits on the nearer one, their levels must lie on one rise (a missing
 // level or two is put back, turning by as many step angles as it rises), the step angle and the
-// run at mid radius must be a stair's. The
-// candidate with the most levels (then seen levels, then lines) wins; its lines are removed and the
-// search repeats. A candidate whose lines hold min_strict_levels levels but fewer than
-// min_seen_levels (a close view: the column hides the inner part of the lower nosings) has its
-// empty levels next to or between them filled by lines under looser bounds that lie on its helix's
-// angle and rise; they never move its axis or helix.
+// run at mid radius must be a stair's. The candidate with the most levels (then seen levels, then
+// lines) wins; its lines are removed and the search repeats. A candidate whose lines hold
+// min_strict_levels levels but fewer than min_seen_levels (a close view: the column hides the inner
+// part of the lower nosings) has its empty levels next to or between them filled by lines under
+// looser bounds that lie on its helix's angle and rise; they never move its axis or helix.
 //
 // Where no nosing helix is found, an elevation map cropped at the spiral may show only the treads'
 // outer rims: each a chord of the outer arc, whose normal through its foot passes through the axis,
