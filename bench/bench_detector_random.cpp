@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/StairDetector.h"
+#include "core/TopView.h"
 #include "io/cloud/CloudFile.h"
 #include "io/json/GroundTruthJson.h"
 #include "sim/RandomCloud.h"
@@ -74,16 +75,17 @@ double quantile(std::vector<double> v, double q) {
     return v[static_cast<std::size_t>(k)];
 }
 
-void detectSet(benchmark::State& state, const stairmap::DetectorParams& params) {
+/// Times `run(sample)` on every cloud (fastest of kRuns) and reports the statistics.
+template <typename Run>
+void timeSet(benchmark::State& state, Run run) {
     const auto& set = samples();
-    const stairmap::StairDetector detector(params);
     std::vector<double> ms(set.size());
     for (auto _ : state) {
         for (std::size_t i = 0; i < set.size(); ++i) {
             double best = 1e30;
             for (int r = 0; r < kRuns; ++r) {
                 const double t0 = cpuMs();
-                benchmark::DoNotOptimize(detector.detect(set[i].cloud, set[i].floor_z));
+                run(set[i]);
                 best = std::min(best, cpuMs() - t0);
             }
             ms[i] = best;
@@ -103,6 +105,13 @@ void detectSet(benchmark::State& state, const stairmap::DetectorParams& params) 
     state.counters["ms_at_0_pts"] = n > 0 ? (sy - b * sx) / n : 0.0;
     state.counters["ms_per_10k_pts"] = 10.0 * b;
 }
+
+void detectSet(benchmark::State& state, const stairmap::DetectorParams& params) {
+    const stairmap::StairDetector detector(params);
+    timeSet(state, [&](const Sample& s) {
+        benchmark::DoNotOptimize(detector.detect(s.cloud, s.floor_z));
+    });
+}
 void BM_DetectRandomSet(benchmark::State& state) { detectSet(state, {}); }
 BENCHMARK(BM_DetectRandomSet)->Iterations(1)->Unit(benchmark::kMillisecond);
 
@@ -113,6 +122,18 @@ void BM_DetectRandomSet_NoTiltedRingPass(benchmark::State& state) {
     detectSet(state, params);
 }
 BENCHMARK(BM_DetectRandomSet_NoTiltedRingPass)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+/// The top view alone (TopView.h: the grid of highest points and the nosing candidates), the
+/// detector's largest single stage: its share of the detector's time.
+void BM_TopViewRandomSet(benchmark::State& state) {
+    const stairmap::DetectorParams params;
+    std::vector<stairmap::TopViewCell> cells;
+    timeSet(state, [&](const Sample& s) {
+        stairmap::buildTopView(s.cloud, stairmap::topViewParams(params, s.floor_z), cells);
+        benchmark::DoNotOptimize(cells.data());
+    });
+}
+BENCHMARK(BM_TopViewRandomSet)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -120,4 +120,19 @@ void DetectorParams::validate() const {
     }
 }
 
+TopViewParams topViewParams(const DetectorParams& params, double floor_z) {
+    TopViewParams tp;
+    tp.leaf_m = params.leaf_size_m;
+    tp.max_range_m = params.max_range_m;
+    tp.z_lo = floor_z - params.max_depth_below_floor_m;
+    tp.z_hi = floor_z + params.max_height_above_floor_m;
+    tp.edge_min_dz_m = params.edge_min_dz_m;
+    tp.edge_spill_dz_m = params.edge_spill_dz_m;
+    tp.neighbour_walk_m = params.neighbour_walk_m;
+    tp.edge_spill_max_dz_m = params.min_step_height_m;
+    tp.ground_z_lo = floor_z - params.floor_tolerance_m;
+    tp.ground_z_hi = floor_z + params.floor_tolerance_m;
+    return tp;
+}
+
 }  // namespace stairmap

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 
+#include "core/TopView.h"
+
 namespace stairmap {
 
 /// [bytes] memory budget of the detector's top-view grid (TopView.h). The grid covers the points'
@@ -194,5 +196,10 @@ struct DetectorParams {
     /// [bytes] the top-view grid for points spread over the whole configured range (worst case).
     double topViewGridBytes() const;
 };
+
+/// The top view's parameters (TopView.h) for a floor at `floor_z` [m]: its height band, the edge
+/// thresholds, and the ground band (floor +- floor_tolerance_m) where only descending nosings are
+/// looked for.
+TopViewParams topViewParams(const DetectorParams& params, double floor_z);
 
 }  // namespace stairmap

@@ -885,17 +885,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (debug) debug->floor_z = floor;
     if (cloud_robot.empty()) return result;
 
-    TopViewParams tp;
-    tp.leaf_m = params_.leaf_size_m;
-    tp.max_range_m = params_.max_range_m;
-    tp.z_lo = floor - params_.max_depth_below_floor_m;
-    tp.z_hi = floor + params_.max_height_above_floor_m;
-    tp.edge_min_dz_m = params_.edge_min_dz_m;
-    tp.edge_spill_dz_m = params_.edge_spill_dz_m;
-    tp.neighbour_walk_m = params_.neighbour_walk_m;
-    tp.edge_spill_max_dz_m = params_.min_step_height_m;
-    tp.ground_z_lo = floor - params_.floor_tolerance_m;
-    tp.ground_z_hi = floor + params_.floor_tolerance_m;
+    const TopViewParams tp = topViewParams(params_, floor);
     thread_local std::vector<TopViewCell> tl_cells;  // scratch re-used between calls
     std::vector<TopViewCell>& cells = tl_cells;
     buildTopView(cloud_robot, tp, cells);
