@@ -3,172 +3,28 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <limits>
-#ifdef __SSE__
-#include <xmmintrin.h>
-#endif
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
 
+#include "core/TopViewGrid.h"
+
 namespace stairmap {
 namespace {
 
-struct GridBox {
-    float x0 = 0, y0 = 0;  // lower corner
-    int nx = 0, ny = 0;
-    float inv_leaf = 0;
-};
-
-/// Running XY bounds; `v < m ? v : m` keeps m when v is NaN.
-struct XyBounds {
-    float min_x = std::numeric_limits<float>::max(), min_y = min_x;
-    float max_x = -min_x, max_y = -min_x;
-    void add(float x, float y) {
-        min_x = x < min_x ? x : min_x;
-        max_x = x > max_x ? x : max_x;
-        min_y = y < min_y ? y : min_y;
-        max_y = y > max_y ? y : max_y;
-    }
-};
-
-#ifdef __SSE__
-/// Bounds of the first 4 * (n / 4) points with packed SSE: four points are 12 consecutive floats
-/// (x y z x | y z x y | z x y z), so a running min/max per register position needs no shuffles;
-/// the lanes are folded into x and y at the end. _mm_min_ps(v, m) returns m when v is NaN.
-/// Returns how many points it covered. (The cheapest pass of the top view: 3 loads, 6 min/max
-/// per 4 points, against ~20 scalar instructions per point.)
-std::size_t boundsOfBlocks(const PointCloud& cloud, XyBounds& bounds) {
-    static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "points are packed floats");
-    const std::size_t blocks = cloud.size() / 4;
-    if (blocks == 0) return 0;
-    __m128 lo[3], hi[3];
-    for (int r = 0; r < 3; ++r) {
-        lo[r] = _mm_set1_ps(bounds.min_x);
-        hi[r] = _mm_set1_ps(bounds.max_x);
-    }
-    const float* f = cloud.front().data();
-    for (std::size_t b = 0; b < blocks; ++b, f += 12) {
-        for (int r = 0; r < 3; ++r) {
-            const __m128 v = _mm_loadu_ps(f + 4 * r);
-            lo[r] = _mm_min_ps(v, lo[r]);
-            hi[r] = _mm_max_ps(v, hi[r]);
-        }
-    }
-    alignas(16) float l[12], h[12];
-    for (int r = 0; r < 3; ++r) {
-        _mm_store_ps(l + 4 * r, lo[r]);
-        _mm_store_ps(h + 4 * r, hi[r]);
-    }
-    for (int j = 0; j + 1 < 12; j += 3) {  // j: an x position, j + 1 the y of the same point
-        bounds.min_x = std::min(bounds.min_x, l[j]);
-        bounds.min_y = std::min(bounds.min_y, l[j + 1]);
-        bounds.max_x = std::max(bounds.max_x, h[j]);
-        bounds.max_y = std::max(bounds.max_y, h[j + 1]);
-    }
-    return 4 * blocks;
-}
-#endif
-
-/// Pass 1: bounding box of the finite points, limited to +-max_range (a cheap pass: the range and
-/// height tests are left to pass 2), padded by `pad` empty columns on every side so that radial
-/// neighbour look-ups never leave the grid.
-GridBox boundingGrid(const PointCloud& cloud, const TopViewParams& p, int pad) {
-    XyBounds bounds;
-    std::size_t i = 0;
-#ifdef __SSE__
-    i = boundsOfBlocks(cloud, bounds);
-#endif
-    for (; i < cloud.size(); ++i) bounds.add(cloud[i].x(), cloud[i].y());
-    float minx = bounds.min_x, miny = bounds.min_y, maxx = bounds.max_x, maxy = bounds.max_y;
-    const float range = static_cast<float>(p.max_range_m);
-    minx = std::max(minx, -range);
-    miny = std::max(miny, -range);
-    maxx = std::min(maxx, range);
-    maxy = std::min(maxy, range);
-    GridBox box;
-    if (minx > maxx || miny > maxy) return box;
-    box.inv_leaf = static_cast<float>(1.0 / p.leaf_m);
-    // Grid aligned to multiples of the leaf so cells do not depend on the cloud's extent.
-    box.x0 = (std::floor(minx * box.inv_leaf) - pad) / box.inv_leaf;
-    box.y0 = (std::floor(miny * box.inv_leaf) - pad) / box.inv_leaf;
-    box.nx = static_cast<int>((maxx - box.x0) * box.inv_leaf) + 1 + pad;
-    box.ny = static_cast<int>((maxy - box.y0) * box.inv_leaf) + 1 + pad;
-    return box;
-}
+using topview::boundingGrid;
+using topview::Column;
+using topview::GridBox;
+using topview::HeightCode;
+using topview::highestPoints;
+using topview::kFraction;
+using topview::kMaxQuanta;
+using topview::kSegment;
+using topview::kSegmentShift;
 
 /// Longest walk of empty columns (and grid padding) for the neighbour look-up; the walk itself is
 /// TopViewParams::neighbour_walk_m (DetectorParams documents the choice).
 constexpr int kPad = kMaxNeighbourWalk;
-
-/// One column of the grid in one 64-bit word: the highest point's height in quanta above z_lo in
-/// the high 32 bits (0 = empty column; a quantum is 3 nm for a 6 m band), then its position inside
-/// the column in 1/65536 of a leaf. "Keep the higher point" is then an unsigned max, free of
-/// branches: whether a point is higher is unpredictable in a cloud, and mispredicted branches cost
-/// a quarter of the pass. The grid stays small (a 10 m x 10 m area at 2.5 cm is 1.3 MB), the point
-/// is never looked up again in the cloud, and equal heights (exact ties) keep the larger fx, fy.
-struct Column {
-    std::uint64_t bits;
-    int z_q() const { return static_cast<int>(bits >> 32); }
-    int fx() const { return static_cast<int>((bits >> 16) & 0xffffu); }
-    int fy() const { return static_cast<int>(bits & 0xffffu); }
-};
-constexpr int kMaxQuanta = (1 << 30) - 1;  ///< fits int arithmetic with the thresholds
-/// Segments of 8 consecutive columns (in memory order) are marked when a point lands in one: the
-/// scan skips unmarked ones with one byte test, and only marked ones are cleared afterwards, so a
-/// wide grid (a LiDAR's 20 m box: 640k columns, 5 MB) costs neither a full memset nor a full read.
-constexpr int kSegmentShift = 3;
-constexpr int kSegment = 1 << kSegmentShift;
-constexpr float kFraction = 65536.f;       ///< position steps per leaf
-
-/// Height quantisation: z_q = 1 + (z - z_lo) / step, so 1..kMaxQuanta covers [z_lo, z_hi].
-struct HeightCode {
-    float z_lo = 0;
-    double step = 1, inv_step = 1;
-    HeightCode(double lo, double hi)
-        : z_lo(static_cast<float>(lo)),
-          step(std::max(hi - lo, 1e-3) / (kMaxQuanta - 1)),
-          inv_step(1.0 / step) {}
-    int encode(float z) const { return 1 + static_cast<int>((z - z_lo) * inv_step); }
-    float decode(int z_q) const { return static_cast<float>(z_lo + (z_q - 0.5) * step); }
-    int quanta(double dz) const { return static_cast<int>(std::lround(dz / step)); }
-};
-
-/// Pass 2: the highest point of every column.
-void highestPoints(const PointCloud& cloud, const TopViewParams& p, const GridBox& box,
-                   const HeightCode& code, Column* grid, std::uint8_t* written) {
-    const float r2 = static_cast<float>(p.max_range_m * p.max_range_m);
-    const float lo = static_cast<float>(p.z_lo), hi = static_cast<float>(p.z_hi);
-    // The range test is needed only when a corner of the box lies beyond max_range (indoors the
-    // whole box is usually within it).
-    const float far_x = std::max(std::abs(box.x0), std::abs(box.x0 + box.nx / box.inv_leaf));
-    const float far_y = std::max(std::abs(box.y0), std::abs(box.y0 + box.ny / box.inv_leaf));
-    const bool check_range = far_x * far_x + far_y * far_y > r2;
-    // Points lie at least kPad columns inside the padded box; the test guards the neighbour
-    // look-ups and drops non-finite coordinates before the conversion to int.
-    const float g_lo = kPad, gx_hi = static_cast<float>(box.nx - kPad);
-    const float gy_hi = static_cast<float>(box.ny - kPad);
-    for (const auto& q : cloud) {
-        const float gx = (q.x() - box.x0) * box.inv_leaf, gy = (q.y() - box.y0) * box.inv_leaf;
-        // Bitwise & of the tests (no short-circuit branches); NaN fails every comparison.
-        bool keep = (q.z() >= lo) & (q.z() <= hi) & (gx >= g_lo) & (gx < gx_hi) & (gy >= g_lo) &
-                    (gy < gy_hi);
-        if (check_range) keep &= q.x() * q.x() + q.y() * q.y() <= r2;
-        // A dropped point (possibly NaN: never converted to int) updates a valid column with the
-        // empty word, which the max ignores.
-        const float sx = keep ? gx : g_lo, sy = keep ? gy : g_lo, sz = keep ? q.z() : lo;
-        const int ix = static_cast<int>(sx), iy = static_cast<int>(sy);
-        const auto z_q = static_cast<std::uint64_t>(std::min(code.encode(sz), kMaxQuanta));
-        // sx - ix is sx's fractional part, exact in float and below 1, so times 2^16 it stays
-        // below 65536: no clamp needed.
-        const auto fx = static_cast<std::uint64_t>(static_cast<int>((sx - ix) * kFraction));
-        const auto fy = static_cast<std::uint64_t>(static_cast<int>((sy - iy) * kFraction));
-        const std::uint64_t word = keep ? (z_q << 32 | fx << 16 | fy) : 0u;
-        const int col = iy * box.nx + ix;
-        grid[col].bits = std::max(grid[col].bits, word);
-        written[col >> kSegmentShift] = 1;
-    }
-}
 
 /// True when all 8 neighbours are occupied and lie within [z_lo, z_hi): then the nearest column
 /// on both radial sides is one of them (a unit direction always rounds to a neighbour), neither
@@ -254,15 +110,53 @@ int codeClamped(const HeightCode& code, double z) {
     return static_cast<int>(std::clamp(q, 0.0, kMaxQuanta + 1.0));
 }
 
+/// A column centre's coordinate along one grid axis [m], its square, and the grid offset of one
+/// column outward (away from the robot) along that axis.
+struct AxisCentre {
+    float c = 0, c2 = 0;
+    int step = 0;
+};
+
+AxisCentre axisCentre(float c, int unit) { return {c, c * c, c > 0 ? unit : -unit}; }
+
+/// Grid offset of the first column of the radial walk away from the robot (offsets[0] of
+/// radialOffsets), found without the direction's square root when it is clear: the larger of
+/// |x|, |y| always steps (its unit component is at least 0.707), the smaller one steps when its
+/// unit component is at least a half, i.e. 3 min^2 >= max^2. Returns false when that comparison
+/// lies within float rounding of the boundary (radialOffsets decides then).
+inline bool firstRadialStep(const AxisCentre& x, const AxisCentre& y, int& step) {
+    const bool x_major = x.c2 >= y.c2;
+    const float major = x_major ? x.c2 : y.c2, minor3 = 3.0f * (x_major ? y.c2 : x.c2);
+    constexpr float kMargin = 1e-4f;  // relative; float rounding of the unit vector is ~1e-7
+    if (std::abs(minor3 - major) <= kMargin * major || major < 1e-12f) return false;
+    const bool minor_steps = minor3 > major;
+    step = (x_major || minor_steps ? x.step : 0) + (!x_major || minor_steps ? y.step : 0);
+    return true;
+}
+
 /// Candidate flags of an occupied column (0: not a nosing candidate).
-std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy,
+std::uint8_t classify(const Column* grid, int col, int nx, const AxisCentre& x, const AxisCentre& y,
                       const Thresholds& t) {
     const int z = grid[col].z_q();
-    if (flatNeighbourhood(grid, col, nx, z - t.min_dz, z + t.spill_max)) return 0;
-    int offsets[kPad];
-    if (!radialOffsets(cx, cy, nx, offsets)) return kFrontDrop | kBackDrop;  // at the robot
     const int z_drop = z - t.min_dz, lo = z + t.spill_dz, hi = z + t.spill_max;
     const bool ground = z > t.ground_lo && z < t.ground_hi;
+    // Shortcut (half of all columns): a walk whose first column is occupied at about the same
+    // level stops there without a drop; when that holds away from the robot (and, outside the
+    // ground band, towards it) no side drops and the column is no candidate. It holds on every
+    // flat column, so the 8-neighbour test is left to the rare undecided first steps.
+    int step;
+    if (firstRadialStep(x, y, step)) {
+        const int level_lo = std::max(z_drop, 1);
+        auto level = [&](int c) {
+            const int zc = grid[c].z_q();
+            return zc >= level_lo && zc < hi;
+        };
+        if (level(col + step) && (ground || level(col - step))) return 0;
+    } else if (flatNeighbourhood(grid, col, nx, z - t.min_dz, z + t.spill_max)) {
+        return 0;
+    }
+    int offsets[kPad];
+    if (!radialOffsets(x.c, y.c, nx, offsets)) return kFrontDrop | kBackDrop;  // at the robot
     Neighbourhood front;  // not needed in the ground band: no drop, no spill
     if (!ground) front = inspect(grid, col, offsets, t.walk, -1, z_drop, hi);
     const Neighbourhood back = inspect(grid, col, offsets, t.walk, +1, z_drop, hi);
@@ -275,6 +169,26 @@ std::uint8_t classify(const Column* grid, int col, int nx, float cx, float cy,
            (back.drop && !front_spill ? kBackDrop : 0);
 }
 
+/// Bit k set when column k of the 8 from `c` is occupied (a kept point has z_q >= 1).
+inline unsigned occupiedColumns(const Column* c) {
+    static_assert(kSegment == 8, "one mask byte per segment");
+#ifdef __SSE2__
+    const float* f = reinterpret_cast<const float*>(c);
+    auto highs = [&](int k) {  // the z_q words (high halves) of columns k .. k + 3
+        return _mm_castps_si128(_mm_shuffle_ps(_mm_loadu_ps(f + 2 * k), _mm_loadu_ps(f + 2 * k + 4),
+                                               _MM_SHUFFLE(3, 1, 3, 1)));
+    };
+    const __m128i zero = _mm_setzero_si128();
+    const unsigned empty_lo = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(highs(0), zero)));
+    const unsigned empty_hi = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(highs(4), zero)));
+    return ~(empty_lo | empty_hi << 4) & 0xffu;
+#else
+    unsigned m = 0;
+    for (int k = 0; k < kSegment; ++k) m |= static_cast<unsigned>(c[k].bits != 0) << k;
+    return m;
+#endif
+}
+
 /// Clears the first `segments` segments' marked columns and their marks when buildTopView returns
 /// (or throws).
 struct ClearOnExit {
@@ -282,16 +196,10 @@ struct ClearOnExit {
     std::vector<std::uint8_t>& written;
     std::size_t segments;
     ~ClearOnExit() {
-        const std::size_t n = grid.size();
         for (std::size_t s = 0; s < segments; ++s) {
             if (!written[s]) continue;
-            const std::size_t first = s << kSegmentShift;
-            Column* const segment = grid.data() + first;
-            if (first + kSegment <= n) {  // a whole segment: fixed-size stores, no libc call
-                for (int k = 0; k < kSegment; ++k) segment[k].bits = 0;
-            } else {
-                std::memset(segment, 0, (n - first) * sizeof(Column));
-            }
+            Column* const segment = grid.data() + (s << kSegmentShift);
+            for (int k = 0; k < kSegment; ++k) segment[k].bits = 0;  // fixed-size stores
         }
         std::memset(written.data(), 0, segments);
     }
@@ -321,12 +229,13 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p,
     std::vector<std::uint8_t>& written = tl_written;
     const std::size_t n = static_cast<std::size_t>(box.nx) * box.ny;
     const std::size_t segments = (n + kSegment - 1) >> kSegmentShift;
-    // Grown, never shrunk: a vector grown again after a shrink zero-fills the difference, a
-    // sixteenth of the top view's time when cloud extents alternate. Columns beyond n stay zero.
-    if (grid.size() < n) grid.resize(n);
+    // Whole segments (the scan reads all 8 columns of one at once), grown, never shrunk: a vector
+    // grown again after a shrink zero-fills the difference, a sixteenth of the top view's time
+    // when cloud extents alternate. Columns beyond n stay zero: no point lands there.
+    if (grid.size() < segments * kSegment) grid.resize(segments * kSegment);
     if (written.size() < segments) written.resize(segments);
     const ClearOnExit clear{grid, written, segments};
-    highestPoints(cloud, p, box, code, grid.data(), written.data());
+    highestPoints(cloud, p, box, code, kPad, grid.data(), written.data());
     // Read through a local pointer: the scan's push_back could alias the thread-local vector, so
     // grid.data() would be loaded again (through the thread pointer) for every column.
     const Column* const columns = grid.data();
@@ -339,28 +248,40 @@ void buildTopView(const PointCloud& cloud, const TopViewParams& p,
     t.ground_lo = codeClamped(code, p.ground_z_lo);
     t.ground_hi = codeClamped(code, p.ground_z_hi);
     const float leaf = 1.0f / box.inv_leaf;
-    // Marked segments only, in memory (row-major) order; the row follows the column index.
+    // Column centres' x by grid column (the direction from the robot is taken at the centre:
+    // grid-aligned, no point noise).
+    thread_local std::vector<AxisCentre> tl_centre_x;
+    tl_centre_x.resize(box.nx);
+    for (int ix = 0; ix < box.nx; ++ix)
+        tl_centre_x[ix] = axisCentre(box.x0 + (ix + 0.5f) * leaf, 1);
+    const AxisCentre* const centre_x = tl_centre_x.data();
+    // Marked segments only, in memory (row-major) order, their occupied columns picked from a
+    // bit mask (testing each column was an unpredictable branch); the row follows the column
+    // index.
     int iy = 0;
     std::size_t row_start = 0;
+    AxisCentre centre_y = axisCentre(box.y0 + 0.5f * leaf, box.nx);
     for (std::size_t s = 0; s < segments; ++s) {
         if ((s & 7) == 0 && s + 8 <= segments && eightClear(marks, s)) {  // most are empty
             s += 7;
             continue;
         }
         if (!marks[s]) continue;
-        const std::size_t end = std::min((s + 1) << kSegmentShift, n);
-        for (std::size_t col = s << kSegmentShift; col < end; ++col) {
-            const Column c = columns[col];
-            if (c.bits == 0) continue;
+        const std::size_t first = s << kSegmentShift;
+        unsigned occupied = occupiedColumns(columns + first);
+        while (occupied) {
+            const std::size_t col = first + __builtin_ctz(occupied);
+            occupied &= occupied - 1;
             while (col >= row_start + static_cast<std::size_t>(box.nx)) {
                 row_start += box.nx;
                 ++iy;
+                centre_y = axisCentre(box.y0 + (iy + 0.5f) * leaf, box.nx);
             }
             const int ix = static_cast<int>(col - row_start);
-            // Direction from the robot, taken at the column centre (grid-aligned, no point noise).
-            const float cx = box.x0 + (ix + 0.5f) * leaf, cy = box.y0 + (iy + 0.5f) * leaf;
-            const std::uint8_t flags = classify(columns, static_cast<int>(col), box.nx, cx, cy, t);
+            const std::uint8_t flags =
+                classify(columns, static_cast<int>(col), box.nx, centre_x[ix], centre_y, t);
             if (flags == 0) continue;
+            const Column c = columns[col];
             cells.push_back({box.x0 + (ix + (c.fx() + 0.5f) / kFraction) * leaf,
                              box.y0 + (iy + (c.fy() + 0.5f) / kFraction) * leaf,
                              code.decode(c.z_q()), flags});

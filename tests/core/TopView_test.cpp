@@ -4,10 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 #include <random>
 #include <thread>
+#include <utility>
 
 namespace stairmap {
 namespace {
@@ -275,6 +279,142 @@ TEST(TopView, EmptyAndAllInvalidCloudsGiveNoCells) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     buildTopView({{nan, nan, nan}, {50.f, 50.f, 0.f}}, stepParams(), cells);
     EXPECT_TRUE(cells.empty());
+}
+
+// --- The rules read directly (TopView.h), column by column, against the fast implementation ---
+
+/// A terrain of random blocks around the robot (behind and beside it too) at levels chosen well
+/// away from every threshold: the floor and a 4 cm rise (spill: between edge_spill_dz_m and
+/// edge_min_dz_m, inside the ground band), 17 and 34 cm steps, an 80 cm wall (above
+/// edge_spill_max_dz_m). Densely sampled blocks, sparse ones (holes along the walks) and empty
+/// ones; every point 2.5 mm or more from its column's borders, so that the column of a point does
+/// not depend on float rounding.
+PointCloud blockTerrain(unsigned seed, double leaf) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double levels[] = {0.0, 0.04, 0.17, 0.34, 0.80};
+    constexpr int kBlocks = 12;  // 12 x 12 blocks of 0.5 m over [-3, 3] m
+    PointCloud cloud;
+    for (int bx = 0; bx < kBlocks; ++bx) {
+        for (int by = 0; by < kBlocks; ++by) {
+            const double level = levels[rng() % 5];
+            const double density = std::array<double, 4>{0.0, 0.08, 0.4, 1.6}[rng() % 4];
+            const int per_block = static_cast<int>(density * 400);  // 400 columns per block
+            for (int k = 0; k < per_block; ++k) {
+                const int ix =
+                    static_cast<int>((-3.0 + 0.5 * bx) / leaf) + static_cast<int>(rng() % 20);
+                const int iy =
+                    static_cast<int>((-3.0 + 0.5 * by) / leaf) + static_cast<int>(rng() % 20);
+                const double x = (ix + 0.1 + 0.8 * unit(rng)) * leaf;
+                const double y = (iy + 0.1 + 0.8 * unit(rng)) * leaf;
+                const double z = level + 0.003 * (2 * unit(rng) - 1);
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(z));
+            }
+        }
+    }
+    cloud.emplace_back(std::numeric_limits<float>::quiet_NaN(), 0.f, 0.f);
+    cloud.emplace_back(12.f, 0.f, 0.f);                              // beyond max_range
+    if (cloud.size() % 4 == 0) cloud.emplace_back(0.5f, 0.5f, 4.f);  // above z_hi; a ragged tail
+    return cloud;
+}
+
+/// TopView.h's rules, column by column, in double precision and the plainest loops.
+/// A candidate column: its flags and its highest point's height [m].
+struct RuleCell {
+    std::uint8_t flags;
+    double z;
+};
+
+std::map<std::pair<int, int>, RuleCell> candidatesByTheRules(const PointCloud& cloud,
+                                                             const TopViewParams& p) {
+    std::map<std::pair<int, int>, double> top;  // highest point per column
+    for (const auto& q : cloud) {
+        if (!q.allFinite() || q.z() < p.z_lo || q.z() > p.z_hi ||
+            std::hypot(q.x(), q.y()) > p.max_range_m)
+            continue;
+        const std::pair<int, int> c{static_cast<int>(std::floor(q.x() / p.leaf_m)),
+                                    static_cast<int>(std::floor(q.y() / p.leaf_m))};
+        auto it = top.find(c);
+        if (it == top.end() || q.z() > it->second) top[c] = q.z();
+    }
+    const int walk = static_cast<int>(std::lround(p.neighbour_walk_m / p.leaf_m));
+    std::map<std::pair<int, int>, RuleCell> out;
+    for (const auto& [c, z] : top) {
+        const double cx = (c.first + 0.5) * p.leaf_m, cy = (c.second + 0.5) * p.leaf_m;
+        const double ux = cx / std::hypot(cx, cy), uy = cy / std::hypot(cx, cy);
+        struct Side {
+            bool drop = false;
+            std::optional<double> first;
+        };
+        auto look = [&](int sign) {  // walk away from (+1) or towards (-1) the robot
+            Side s;
+            for (int k = 1; k <= walk; ++k) {
+                const std::pair<int, int> n{
+                    c.first + sign * static_cast<int>(std::floor(k * ux + 0.5)),
+                    c.second + sign * static_cast<int>(std::floor(k * uy + 0.5))};
+                const auto it = top.find(n);
+                if (it == top.end()) continue;  // a hole is looked past
+                if (!s.first) s.first = it->second;
+                if (it->second < z - p.edge_min_dz_m) {
+                    s.drop = true;
+                    return s;
+                }
+                if (it->second < z + p.edge_spill_max_dz_m) return s;  // about the same level
+            }                                                          // (a wall is looked past)
+            s.drop = !s.first;                                         // nothing within the walk
+            return s;
+        };
+        const bool ground = z > p.ground_z_lo && z < p.ground_z_hi;
+        const Side front = ground ? Side{} : look(-1), back = look(+1);
+        auto spill = [&](const Side& s) {
+            return s.first && *s.first > z + p.edge_spill_dz_m &&
+                   *s.first < z + p.edge_spill_max_dz_m;
+        };
+        const std::uint8_t flags = (front.drop && !spill(back) ? kFrontDrop : 0) |
+                                   (back.drop && !spill(front) ? kBackDrop : 0);
+        if (flags) out[c] = {flags, z};
+    }
+    return out;
+}
+
+TEST(TopView, FollowsItsRulesColumnByColumnOnRandomTerrain) {
+    // The fast implementation (packed column words, SIMD passes, first-step shortcut, flat
+    // neighbourhoods, segment marks) against the rules read plainly: the same candidate columns,
+    // flags and heights, for two walk lengths and a ground band.
+    int compared = 0;
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        for (double walk_m : {0.20, 0.10}) {
+            TopViewParams p;
+            p.neighbour_walk_m = walk_m;
+            p.edge_spill_max_dz_m = 0.11;
+            p.ground_z_lo = -0.05;
+            p.ground_z_hi = 0.05;
+            const PointCloud cloud = blockTerrain(seed, p.leaf_m);
+            const auto expected = candidatesByTheRules(cloud, p);
+            std::vector<TopViewCell> cells;
+            buildTopView(cloud, p, cells);
+            std::map<std::pair<int, int>, RuleCell> got;
+            for (const auto& c : cells)
+                got[{static_cast<int>(std::floor(c.x / p.leaf_m)),
+                     static_cast<int>(std::floor(c.y / p.leaf_m))}] = {c.flags, c.z};
+            ASSERT_GT(expected.size(), 500u) << "seed " << seed;
+            EXPECT_EQ(got.size(), cells.size()) << "seed " << seed << ": two cells in one column";
+            int wrong = 0;
+            for (const auto& [c, cell] : expected) {
+                const auto it = got.find(c);
+                if (it == got.end() || it->second.flags != cell.flags ||
+                    std::abs(it->second.z - cell.z) > 1e-5)
+                    ++wrong;
+            }
+            for (const auto& [c, cell] : got) wrong += expected.count(c) ? 0 : 1;
+            EXPECT_EQ(wrong, 0) << "seed " << seed << ", walk " << walk_m
+                                << " m: " << expected.size() << " candidates by the rules, "
+                                << got.size() << " found";
+            compared += static_cast<int>(expected.size());
+        }
+    }
+    EXPECT_GT(compared, 10000);
 }
 
 }  // namespace
