@@ -28,7 +28,8 @@ constexpr int kPad = kMaxNeighbourWalk;
 
 /// True when all 8 neighbours are occupied and lie within [z_lo, z_hi): then the nearest column
 /// on both radial sides is one of them (a unit direction always rounds to a neighbour), neither
-/// side drops, and the column is no candidate. Cheap exact shortcut for dense surfaces.
+/// side drops, and the column is no candidate. Exact; asked only where the first radial step
+/// lies too near a rounding boundary to be told from squares (firstRadialStep).
 inline bool flatNeighbourhood(const Column* grid, int col, int nx, int z_lo, int z_hi) {
     const int around[8] = {-nx - 1, -nx, -nx + 1, -1, 1, nx - 1, nx, nx + 1};
     z_lo = std::max(z_lo, 1);  // an empty column (0) is never flat
@@ -152,7 +153,7 @@ std::uint8_t classify(const Column* grid, int col, int nx, const AxisCentre& x, 
             return zc >= level_lo && zc < hi;
         };
         if (level(col + step) && (ground || level(col - step))) return 0;
-    } else if (flatNeighbourhood(grid, col, nx, z - t.min_dz, z + t.spill_max)) {
+    } else if (flatNeighbourhood(grid, col, nx, z_drop, hi)) {
         return 0;
     }
     int offsets[kPad];
