@@ -27,9 +27,9 @@ struct DetectorParams {
     /// [m] rows of the tilted-ring pass. A LiDAR pitched down sees a flight off its pitch axis
     /// with rings that cross each riser at a slant (at 28 deg pitch and 30 deg off the axis, some
     /// 30 cm of height over a 1.4 m riser at 6 m), so a riser's hits spread over several rows,
-    /// each piece too short for a line: a flight seen so gives few lines or none. A second pass
-    /// with rows this tall, on the lines off the flights the first pass found, adds the flights
-    /// it finds there. Must exceed row_height_m; 0 = off.
+    /// each piece too short for a line: a flight seen so gives few lines or none. A pass with
+    /// rows this tall, the last one, on the lines off the flights the others found, adds the
+    /// flights it finds there. Must exceed row_height_m; 0 = off.
     double tilted_ring_row_height_m = 0.05;
     int azimuth_bins = 1800;               ///< [-] azimuth columns over 360 deg (0.2 deg each)
     /// [m] a top-view cell is an edge candidate when its neighbour towards the robot is lower or

@@ -491,5 +491,14 @@ INSTANTIATE_TEST_SUITE_P(ReadBothWays, MissedBefore,
                          testing::Values(SceneCase{26026, 284, 0.01, 0.02, true,
                                                    "level OS1-64, flight out of a pit", 0, 6}));
 
+// Pitched HDL-32s 5.8-8 m from flights of 0.20-0.22 m rises, which the dashed-nosing pass reads
+// within 4 mm. The tilted-ring pass, when it ran before it, took the lines first and read them
+// through its taller rows: 0.142 m on 0.218 m rises (dev5 r0204, five edges across the riser hits
+// of three steps) and 0.190 m on 0.204 m (dev6 r0488's far flight). Now it runs last.
+INSTANTIATE_TEST_SUITE_P(
+    TiltedRingPassLast, MissedBefore,
+    testing::Values(SceneCase{26026, 204, 0.01, 0.03, false, "pitched HDL-32 at 8 m", 0},
+                    SceneCase{28028, 488, 0.01, 0.03, false, "pitched HDL-32 at 5.8 m", 1}));
+
 }  // namespace
 }  // namespace stairmap
