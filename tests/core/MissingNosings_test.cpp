@@ -58,6 +58,22 @@ TEST(MissingNosings, AnAliasedChainWithOneRiserHitReadLowStillGetsEveryStepBack)
         EXPECT_NEAR(edges[k].centre().x(), 1.0 + k * kRun, 1e-9) << "edge " << k;
 }
 
+TEST(MissingNosings, AnAliasedChainWhoseFirstLineIsAShortTurnedPieceGetsEveryStepBack) {
+    // dev6 r0026 (a level VLP-16 5.9 m from an open-riser flight): pairs 1, 2, 2, 2, 2, 1, 2 steps
+    // apart, the lowest nosing seen as a 0.5 m piece turned 30 deg. The pair's spacing measured
+    // from the turned piece's line alone read two thirds of a run (no step, no unit rise: nothing
+    // was put back and the chain read 1.6 times the rise); both ways it reads a step.
+    std::vector<LineSegment> edges = edgesAtSteps({0, 1, 3, 5, 7, 9, 10, 12});
+    const double turn = 30.0 * M_PI / 180.0;
+    const Eigen::Vector2d centre(1.0, 0.1), along(-std::sin(turn), std::cos(turn));
+    edges[0] = unseenNosing(centre - 0.25 * along, centre + 0.25 * along, 0.0);
+    edges[0].num_points = 8;
+    EXPECT_EQ(fillMissingNosings(edges), 5);
+    ASSERT_EQ(edges.size(), 13u);
+    for (std::size_t k = 1; k < edges.size(); ++k)
+        EXPECT_NEAR(edges[k].z, k * kRise, 1e-9) << "edge " << k;
+}
+
 TEST(MissingNosings, AnEdgeReadLowIsNoReasonToSplitTheOtherSteps) {
     // Evenly spaced nosings where the last riser hit reads 7 cm low: its rise alone looks like one
     // step of a flight with 0.10 m rises, the others two of them; but its spacing is a full run,

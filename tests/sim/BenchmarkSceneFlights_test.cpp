@@ -491,6 +491,16 @@ INSTANTIATE_TEST_SUITE_P(ReadBothWays, MissedBefore,
                          testing::Values(SceneCase{26026, 284, 0.01, 0.02, true,
                                                    "level OS1-64, flight out of a pit", 0, 6}));
 
+// A level VLP-16 5.9 m from a 16-step open-riser flight (0.135 m rises) sees its two lowest
+// nosings, then every other one and one pair more (dev6 r0026). The lowest is a short piece turned
+// 30 deg, and the pair's spacing, read from that piece's line alone, was no run: the chain read
+// 0.221 m rises on 0.531 m runs (a miss and a false positive). Its steps are put back
+// (MissingNosings' spacing, both ways).
+INSTANTIATE_TEST_SUITE_P(AliasedChainWithATurnedPiece, MissedBefore,
+                         testing::Values(SceneCase{28028, 26, 0.01, 0.02, true,
+                                                   "level VLP-16 at 5.9 m, every other nosing", 0,
+                                                   12}));
+
 // Pitched HDL-32s 5.8-8 m from flights of 0.20-0.22 m rises, which the dashed-nosing pass reads
 // within 4 mm. The tilted-ring pass, when it ran before it, took the lines first and read them
 // through its taller rows: 0.142 m on 0.218 m rises (dev5 r0204, five edges across the riser hits
