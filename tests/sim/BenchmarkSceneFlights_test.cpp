@@ -422,6 +422,11 @@ TEST(NegativeScene, TwoStepStagesWhoseEdgeReadsLowAreNoFlight) {
     }
 }
 
+// A furnished room seen by a depth camera pitched down 26 deg (negatives of seed 26026, r1160):
+// the tilted-ring pass chained edges of its furniture 0.32, 0.11 and 0.23 m apart in height into
+// a four-step "flight" (0.209 m rises); its flights must rise evenly.
+TEST(NegativeScene, UnevenEdgesOfFurnitureAreNoFlight) { expectNoFlight(26026, 1160); }
+
 // Descents whose first found edge lies one or five steps below the robot's floor (the floor's own
 // nosing unseen; a landing), dev3 r0086 the closest to those ramps (three edges, 0.107 m rises):
 // in front of the first edge lie level surfaces a whole number of rises apart, so each is kept.
