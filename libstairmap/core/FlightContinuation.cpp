@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/LineFusion.h"
 #include "core/MissingNosings.h"
@@ -138,32 +139,61 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     const Eigen::Vector2d c = last.centre(), u = last.direction();
     const double half = 0.5 * last.length() * (1.0 - 2.0 * p.end_fraction);
     const double s_lo = p.riser_from_runs * step.run, s_hi = p.riser_to_runs * step.run;
-    const double z_lo = last.z + p.riser_from_rises * step.rise;
-    const double z_hi = last.z + p.riser_to_rises * step.rise;
     const double s_beyond = s_hi + p.riser_beyond_runs * step.run;
-    int on = 0, level = 0, above = 0, flat_beyond = 0;
-    double t_min = 1e9, t_max = -1e9;
-    const StripBox box = stripBox(c, step.up, u, s_lo, s_beyond, half, last.z - p.tread_dz_m,
-                                  std::numeric_limits<double>::max());
+    const double tread_s_lo = p.riser_tread_from_runs * step.run;
+    const double tread_dz_hi = p.riser_from_rises * step.rise;  // below the window's heights
+    // The window's points (height above the last edge, place along it), the tread's heights.
+    struct WindowPoint {
+        double dz, s, t;
+    };
+    std::vector<WindowPoint> window;
+    std::vector<double> tread, beyond;
+    const StripBox box = stripBox(c, step.up, u, std::min(s_lo, tread_s_lo), s_beyond, half,
+                                  last.z - p.tread_dz_m, std::numeric_limits<double>::max());
     for (const Eigen::Vector3f& q : cloud) {
         if (!box.mayContain(q)) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d), t = u.dot(d);
-        if (s < s_lo || s > s_beyond || std::abs(t) > half) continue;
-        if (s > s_hi) {
-            flat_beyond += q.z() >= z_lo && q.z() <= z_hi;
+        if (s < std::min(s_lo, tread_s_lo) || s > s_beyond || std::abs(t) > half) continue;
+        const double dz = q.z() - last.z;
+        if (s < s_lo) {
+            if (dz >= -p.tread_dz_m && dz < tread_dz_hi) tread.push_back(dz);
             continue;
         }
-        if (q.z() >= z_lo && q.z() <= z_hi) {
+        if (s > s_hi) {
+            beyond.push_back(dz);
+            continue;
+        }
+        window.push_back({dz, s, t});
+    }
+    // The next riser rises from the tread behind the last edge: where that tread is seen a little
+    // above the edge (an edge read low on its riser: a two-step stage's platform edge 3 cm under
+    // the platform, negatives of seed 26026), the window's heights start above the tread, else
+    // above the edge.
+    double base = 0.0;
+    if (static_cast<int>(tread.size()) >=
+        p.min_points) {  // its lower quartile: debris stands on it
+        const auto q = tread.begin() + static_cast<std::ptrdiff_t>(tread.size() / 4);
+        std::nth_element(tread.begin(), q, tread.end());
+        if (*q > p.riser_tread_min_raise_rises * step.rise) base = *q;  // else the edge's noise
+    }
+    const double z_lo = base + p.riser_from_rises * step.rise;
+    const double z_hi = base + p.riser_to_rises * step.rise;
+    int on = 0, level = 0, above = 0;
+    double t_min = 1e9, t_max = -1e9;
+    for (const WindowPoint& w : window) {
+        if (w.dz >= z_lo && w.dz <= z_hi) {
             ++on;
-            t_min = std::min(t_min, t);
-            t_max = std::max(t_max, t);
-        } else if (std::abs(q.z() - last.z) <= p.tread_dz_m && s > step.run + p.tread_dz_m) {
+            t_min = std::min(t_min, w.t);
+            t_max = std::max(t_max, w.t);
+        } else if (std::abs(w.dz) <= p.tread_dz_m && w.s > step.run + p.tread_dz_m) {
             ++level;
-        } else if (q.z() > last.z + step.rise + p.above_dz_m) {
+        } else if (w.dz > step.rise + p.above_dz_m) {
             ++above;
         }
     }
+    int flat_beyond = 0;
+    for (const double dz : beyond) flat_beyond += dz >= z_lo && dz <= z_hi;
     return on >= p.min_points && on > level && on > 2 * flat_beyond && 4 * above <= on &&
            t_max - t_min >= p.min_spread_fraction * 2.0 * half;
 }

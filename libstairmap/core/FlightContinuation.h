@@ -70,6 +70,14 @@ struct FlightContinuationParams {
     /// (a riser hit) lies in the window's heights and goes on (two-step stages, negatives of seed
     /// 26026: edges read 3 cm under the platform, which filled the window)
     double riser_beyond_runs = 0.7;
+    /// [-] ... and the tread behind the last edge looked at from this many runs behind it up to
+    /// the window: seen (min_points; its lower quartile, as debris stands on it) more than
+    /// riser_tread_min_raise_rises but less than riser_from_rises rises above the edge, the
+    /// window's heights count from it (an edge read low on its riser: a two-step stage's platform
+    /// edge read 3 cm under the platform, negatives of seed 26026 r0176, showed one ring on the
+    /// platform in the window and none beyond it)
+    double riser_tread_from_runs = 0.15;
+    double riser_tread_min_raise_rises = 0.1;
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:
