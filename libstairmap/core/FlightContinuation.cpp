@@ -171,8 +171,8 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     // the platform, negatives of seed 26026), the window's heights start above the tread, else
     // above the edge.
     double base = 0.0;
-    if (static_cast<int>(tread.size()) >=
-        p.min_points) {  // its lower quartile: debris stands on it
+    if (static_cast<int>(tread.size()) >= p.min_points) {
+        // Its lower quartile: debris stands on a tread.
         const auto q = tread.begin() + static_cast<std::ptrdiff_t>(tread.size() / 4);
         std::nth_element(tread.begin(), q, tread.end());
         if (*q > p.riser_tread_min_raise_rises * step.rise) base = *q;  // else the edge's noise

@@ -77,7 +77,7 @@ struct FlightContinuationParams {
     /// edge read 3 cm under the platform, negatives of seed 26026 r0176, showed one ring on the
     /// platform in the window and none beyond it)
     double riser_tread_from_runs = 0.15;
-    double riser_tread_min_raise_rises = 0.1;
+    double riser_tread_min_raise_rises = 0.1;  ///< [-] of the rise: below it, the edge's noise
 };
 
 /// Whether `edges` (an ascending chain from the floor up, real z) are a regular straight flight:

@@ -22,9 +22,9 @@ constexpr double kOneStepMin = 0.75;
 constexpr double kOneStepMax = 1.33;
 
 /// [m] The pair's horizontal spacing: the mean of each centre's XY distance to the other's line.
-/// One short piece's line turned 30 deg off its nosing (a far ring's few points) puts the other
-/// centre 30 % off from it alone, the mean halves that (dev6 r0026: 0.398 m from the turned
-/// piece's line, 0.228 m the other way, 0.303 m runs).
+/// From one line alone, a short piece turned 30 deg off its nosing (a far ring's few points)
+/// puts the other centre a third of a run off (dev6 r0026: 0.398 m from the turned piece's line,
+/// 0.228 m the other way, their mean 0.313 m, on 0.303 m runs).
 double spacing(const LineSegment& a, const LineSegment& b) {
     return 0.5 * (std::abs(a.distanceTo(b.centre())) + std::abs(b.distanceTo(a.centre())));
 }

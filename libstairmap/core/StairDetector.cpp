@@ -924,7 +924,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     // Last of the passes: its taller rows smear a riser's hits over twice the height, so its
     // flights read their rise worse than the other passes' readings of the same flight (dev5
     // r0204: 0.142 m where the dashed pass reads 0.215 m on 0.218 m rises; dev6 r0488's far
-    // flight 0.190 m where it reads 0.200 m on 0.204 m). Run first, it took their lines.
+    // flight 0.190 m where it reads 0.200 m on 0.204 m). Run before them, it took their lines.
     if (params_.tilted_ring_row_height_m > 0)
         addTiltedRingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     placeFewLevelSpirals(few_level_spirals, result.staircases);
