@@ -146,8 +146,9 @@ int main(int argc, char** argv) {
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     try {
         if (samples().empty()) {
+            const char* dir = std::getenv("STAIRMAP_BENCH_RANDOM_DIR");
             std::fprintf(stderr, "bench_detector_random: no r*.pcd.gz clouds in %s\n",
-                         std::getenv("STAIRMAP_BENCH_RANDOM_DIR"));
+                         dir ? dir : "the in-process set ($STAIRMAP_BENCH_RANDOM_N is 0)");
             return 2;
         }
     } catch (const std::exception& e) {

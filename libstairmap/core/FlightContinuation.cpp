@@ -140,7 +140,8 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     const double half = 0.5 * last.length() * (1.0 - 2.0 * p.end_fraction);
     const double s_lo = p.riser_from_runs * step.run, s_hi = p.riser_to_runs * step.run;
     const double s_beyond = s_hi + p.riser_beyond_runs * step.run;
-    const double tread_s_lo = p.riser_tread_from_runs * step.run;
+    // The strip looked at starts at the tread behind the last edge (or at the window, if nearer).
+    const double s_first = std::min(s_lo, p.riser_tread_from_runs * step.run);
     const double tread_dz_hi = p.riser_from_rises * step.rise;  // below the window's heights
     // The window's points (height above the last edge, place along it), the tread's heights.
     struct WindowPoint {
@@ -148,13 +149,13 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     };
     std::vector<WindowPoint> window;
     std::vector<double> tread, beyond;
-    const StripBox box = stripBox(c, step.up, u, std::min(s_lo, tread_s_lo), s_beyond, half,
-                                  last.z - p.tread_dz_m, std::numeric_limits<double>::max());
+    const StripBox box = stripBox(c, step.up, u, s_first, s_beyond, half, last.z - p.tread_dz_m,
+                                  std::numeric_limits<double>::max());
     for (const Eigen::Vector3f& q : cloud) {
         if (!box.mayContain(q)) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
         const double s = step.up.dot(d), t = u.dot(d);
-        if (s < std::min(s_lo, tread_s_lo) || s > s_beyond || std::abs(t) > half) continue;
+        if (s < s_first || s > s_beyond || std::abs(t) > half) continue;
         const double dz = q.z() - last.z;
         if (s < s_lo) {
             if (dz >= -p.tread_dz_m && dz < tread_dz_hi) tread.push_back(dz);

@@ -97,8 +97,9 @@ bool treadAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
                         const FlightContinuationParams& params = {});
 
 /// Whether `edges` (as above) are a regular straight flight and the cloud shows the riser of the
-/// step above the last edge: points riser_from_rises..riser_to_rises rises above the last edge in
-/// the window riser_from_runs..riser_to_runs runs behind it, spread along it (as the next tread's),
+/// step above the last edge: points riser_from_rises..riser_to_rises rises above the last edge (or
+/// above the tread seen just behind it, when that lies higher: riser_tread_*) in the window
+/// riser_from_runs..riser_to_runs runs behind it, spread along it (as the next tread's),
 /// more of them than points at the last edge's own height beyond one run (a platform going on),
 /// more than twice as many as points at the window's heights up to riser_beyond_runs further
 /// behind (a platform whose edge was read low), and at most a quarter as many a rise and above_dz
