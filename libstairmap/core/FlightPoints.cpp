@@ -1,5 +1,6 @@
 #include "core/FlightPoints.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace stairmap {
@@ -18,6 +19,14 @@ FlightBox flightBox(const std::vector<LineSegment>& edges, double margin_m, doub
     box.z_lo = z_lo;
     box.z_hi = z_hi;
     return box;
+}
+
+FloatBounds floatBounds(const FlightBox& a, const FlightBox& b) {
+    constexpr double kPad = 0.01;  // [m]
+    const auto lower = [](double u, double v) { return static_cast<float>(std::min(u, v) - kPad); };
+    const auto upper = [](double u, double v) { return static_cast<float>(std::max(u, v) + kPad); };
+    return {{lower(a.lo.x(), b.lo.x()), lower(a.lo.y(), b.lo.y()), lower(a.z_lo, b.z_lo)},
+            {upper(a.hi.x(), b.hi.x()), upper(a.hi.y(), b.hi.y()), upper(a.z_hi, b.z_hi)}};
 }
 
 PointCloud pointsInBox(const PointCloud& cloud, const FlightBox& box) {

@@ -22,6 +22,21 @@ struct FlightBox {
     }
 };
 
+/// Float bounds around boxes, padded by a centimetre (far more than float rounding at 100 m): a
+/// point outside them lies outside every box they hold and is rejected without FlightBox::
+/// contains' float-to-double conversions (most of a cloud); one inside is then tested exactly. A
+/// NaN coordinate fails them.
+struct FloatBounds {
+    Eigen::Vector3f lo, hi;
+    bool mayContain(const Eigen::Vector3f& q) const {
+        return q.x() >= lo.x() && q.x() <= hi.x() && q.y() >= lo.y() && q.y() <= hi.y() &&
+               q.z() >= lo.z() && q.z() <= hi.z();
+    }
+};
+
+/// FloatBounds holding both `a` and `b`.
+FloatBounds floatBounds(const FlightBox& a, const FlightBox& b);
+
 /// The XY bounding box of `edges` grown by `margin_m` on every side, with z in [z_lo, z_hi] [m]
 /// (empty when there are no edges).
 FlightBox flightBox(const std::vector<LineSegment>& edges, double margin_m, double z_lo,

@@ -234,8 +234,10 @@ void correctRiserTopEdges(const PointCloud& cloud, StairDirection dir, double fl
         FlightBox front = startWindowBox(edges, rise, run);
         front.z_hi += TreadHeightParams().max_raise_fraction * rise;  // the first edge may rise
         const bool crop = !mostlyInside(cloud, box);
+        const FloatBounds either = floatBounds(box, front);
         PointCloud near_flight, in_front;
         for (const Eigen::Vector3f& q : cloud) {
+            if (!either.mayContain(q)) continue;
             if (crop && box.contains(q)) near_flight.push_back(q);
             if (front.contains(q)) in_front.push_back(q);
         }

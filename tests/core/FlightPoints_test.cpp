@@ -56,6 +56,35 @@ TEST(FlightPoints, TheBoxHoldsExactlyThePointsKept) {
     EXPECT_FALSE(flightBox({}, 1.0, -1.0, 1.0).contains(Eigen::Vector3f(0.f, 0.f, 0.f)));
 }
 
+TEST(FlightPoints, FloatBoundsPassEveryPointOfEitherBoxAndRejectFarOnes) {
+    // The first test of the riser-top corrections' copy loop: a point either box holds must
+    // pass it, exactly on a border too (a float rounded inwards would drop it).
+    FlightBox a;
+    a.lo = {1.1, -0.7};
+    a.hi = {2.3, 0.9};
+    a.z_lo = -0.31;
+    a.z_hi = 0.47;
+    FlightBox b;
+    b.lo = {0.4, -0.2};
+    b.hi = {1.3, 0.3};
+    b.z_lo = -0.9;
+    b.z_hi = 0.1;
+    const FloatBounds f = floatBounds(a, b);
+    const auto on = [](double v) { return static_cast<float>(v); };  // may round outwards
+    for (const FlightBox& box : {a, b})
+        for (const double x : {box.lo.x(), box.hi.x()})
+            for (const double y : {box.lo.y(), box.hi.y()})
+                for (const double z : {box.z_lo, box.z_hi}) {
+                    const Eigen::Vector3f q(on(x), on(y), on(z));
+                    EXPECT_TRUE(f.mayContain(q)) << q.transpose();
+                }
+    EXPECT_FALSE(f.mayContain({2.5f, 0.f, 0.f}));    // beyond a's far x
+    EXPECT_FALSE(f.mayContain({0.8f, 0.f, -1.0f}));  // below b
+    EXPECT_FALSE(f.mayContain({0.8f, 1.0f, 0.f}));   // beside both
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_FALSE(f.mayContain({nan, 0.f, 0.f}));
+}
+
 TEST(FlightPoints, NoEdgesKeepNothing) {
     const PointCloud cloud = {{0.f, 0.f, 0.f}, {1.f, 1.f, 0.5f}};
     EXPECT_TRUE(pointsNearEdges(cloud, {}, 1.0, -1.0, 1.0).empty());
