@@ -108,7 +108,7 @@ eval: build
 	  $(STAIRMAP) eval --detect $$dir > $$dir.eval.txt || exit 1; \
 	  $(STAIRMAP) eval --detect $$dir --group-by sensor_kind > $$dir.sensors.txt || exit 1; \
 	  echo "== $$name set (seed $$seed, $(EVAL_N) scenes, generator v$$ver): current detector"; \
-	  sed -n '1,/^all /p' $$dir.eval.txt; \
+	  sed -n '1,/^false positives on true flights/p' $$dir.eval.txt; \
 	  echo "-- by sensor kind"; sed -n '3,/^all /p' $$dir.sensors.txt; \
 	done
 

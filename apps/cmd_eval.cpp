@@ -34,6 +34,8 @@ const char* kEvalHelp =
     "A detection matches a true staircase of the same direction-as-seen when the median horizontal\n"
     "distance of its edge centres to the nearest true nosing is < --max-xy and the median vertical\n"
     "distance < --max-z; each truth is matched at most once; other detections are false positives.\n"
+    "A false positive meeting the direction and --max-xy for some true staircase lies on a true\n"
+    "flight (its heights misread, or the flight read twice): counted apart, after the table.\n"
     "Exit status: 0 on success, 2 on bad input (one line on stderr naming the file).";
 
 struct EvalOptions {
@@ -94,7 +96,8 @@ int runEval(const EvalOptions& options) {
         for (const auto& s : report.samples) {
             for (const auto& missed : s.missed) std::cout << "missed: " << s.name << " " << missed << "\n";
             if (s.false_positives > 0)
-                std::cout << "false positives: " << s.name << " " << s.false_positives << "\n";
+                std::cout << "false positives: " << s.name << " " << s.false_positives << " ("
+                          << s.false_positives_on_flights << " on a true flight)\n";
         }
     }
     return 0;

@@ -55,6 +55,18 @@ PairErrors pairErrors(const Staircase& d, const StaircaseTruth& g) {
     return e;
 }
 
+/// Whether detection `d` meets the matching rule's direction and xy parts for an expected true
+/// staircase of `truth`, whatever its heights.
+bool liesOnAFlight(const Staircase& d, const SceneTruth& truth, const EvaluationParams& params) {
+    if (d.steps.empty()) return false;
+    for (const auto& g : truth.staircases) {
+        if (!expected(g, truth) || g.nosings.empty()) continue;
+        if (g.seen_as && d.direction != *g.seen_as) continue;
+        if (edgeDistances(d, g).median_xy_m < params.max_xy_m) return true;
+    }
+    return false;
+}
+
 int kindOrder(const std::string& kind) {
     static const std::vector<std::string> order = {"ascending", "hollow", "spiral",
                                                    "descending", "debris", "negative"};
@@ -110,6 +122,9 @@ SampleOutcome evaluateSample(const EvaluationSample& sample, const EvaluationPar
         out.errors.push_back(pairErrors(sample.detections[d], stairs[g]));
     }
     out.false_positives = static_cast<int>(std::count(det_used.begin(), det_used.end(), false));
+    for (std::size_t d = 0; d < sample.detections.size(); ++d)
+        if (!det_used[d] && liesOnAFlight(sample.detections[d], sample.truth, params))
+            ++out.false_positives_on_flights;
     for (std::size_t g = 0; g < stairs.size(); ++g) {
         if (!gt_used[g] && expected(stairs[g], sample.truth)) out.missed.push_back(stairs[g].name);
     }
@@ -123,6 +138,7 @@ void accumulate(KindSummary& row, const SampleOutcome& s, const std::optional<do
     row.samples += s.expected;
     row.detections += s.matched;
     row.false_positives += s.false_positives;
+    row.false_positives_on_flights += s.false_positives_on_flights;
     for (const auto& e : s.errors) {
         row.mae_height_cm += e.height_cm;
         row.mae_depth_cm += e.depth_cm;

@@ -10,14 +10,16 @@
 // Candidate pairs are then assigned greedily by increasing cost (median xy + median z): each true
 // staircase and each detection is used at most once. Detections left over are false positives
 // (a second detection of an already matched staircase is a false positive too); true staircases
-// left over are misses. Only true staircases with seen_as set (or all of them when the truth has
-// no observer, i.e. frame "world") are expected to be found.
+// left over are misses. A false positive whose edges meet rule 1 and the xy half of rule 2 for some
+// expected staircase lies on a true flight: that flight read with its heights off (max_z_m or
+// more), or read twice. The rest lie where no flight is. Only true staircases with seen_as set (or
+// all of them when the truth has no observer, i.e. frame "world") are expected to be found.
 //
 // Errors of a matched pair: |step_height - rise|, |step_depth - run|, |step_width - width| [cm],
 // and the location error = distance [cm] from D.location (centre of D's first edge) to the segment
 // of the nosing D should start with: G's lowest nosing for an ascending detection, its highest
-// nosing for a descending one; the start error = |flightStartZ(D) - G's start| [cm], G's start being
-// the surface the flight starts from as D meets it: bottom_z for an ascending D, top_z for a
+// nosing for a descending one; the start error = |flightStartZ(D) - G's start| [cm], G's start
+// being the surface the flight starts from as D meets it: bottom_z for an ascending D, top_z for a
 // descending one (a flight off a platform or landing above or below the observer's floor too).
 
 #include <optional>
@@ -59,6 +61,8 @@ struct SampleOutcome {
     int expected = 0;                 ///< true staircases to find
     int matched = 0;
     int false_positives = 0;
+    /// of them, those lying on an expected true staircase (a flight misread or read twice)
+    int false_positives_on_flights = 0;
     std::vector<PairErrors> errors;   ///< one per matched pair
     std::vector<std::string> missed;  ///< names of unmatched true staircases
 };
@@ -70,6 +74,7 @@ struct KindSummary {
     int samples = 0;                  ///< true staircases expected (Table II "Samples")
     int detections = 0;               ///< of them matched (Table II "Detection")
     int false_positives = 0;
+    int false_positives_on_flights = 0;  ///< of them, on a true flight (SampleOutcome)
     double mae_height_cm = 0.0;       ///< means over matched pairs (0 when none)
     double mae_depth_cm = 0.0;
     double mae_width_cm = 0.0;

@@ -97,6 +97,31 @@ TEST(SimEvalCli, EvalScoresADetectOutputAgainstItsTruth) {
     EXPECT_NEAR(total.at("mae_width_cm").get<double>(), 20.0, 1e-6);
     EXPECT_NEAR(total.at("mae_location_cm").get<double>(), 0.0, 1e-6);
     EXPECT_NEAR(total.at("mean_time_ms").get<double>(), 12.5, 1e-9);
+    EXPECT_EQ(total.at("false_positives_on_flights").get<int>(), 0);
+    // The flight read twice more, once 10 cm too high: two false positives, both on it; the text
+    // report says so after its table and on the sample's line.
+    Staircase high = d;
+    for (StairEdge& e : high.steps) {
+        e.start.z() += 0.10;
+        e.end.z() += 0.10;
+    }
+    high.location = high.steps.front().centre();
+    const nlohmann::json thrice = {
+        {"staircases", {io::toJson(d), io::toJson(d), io::toJson(high)}}};
+    io::writeGroundTruthFile(dir + "/cloud_8.gt.json", truth, {{"kind", "ascending"}});
+    std::ofstream(dir + "/cloud_8.json") << thrice.dump();
+    const auto twice = runStairmap("eval '" + dir + "/cloud_8.json' --json", dir);
+    ASSERT_EQ(twice.exit_code, 0) << twice.err;
+    const auto t8 = nlohmann::json::parse(twice.out).at("total");
+    EXPECT_EQ(t8.at("false_positives").get<int>(), 2);
+    EXPECT_EQ(t8.at("false_positives_on_flights").get<int>(), 2);
+    const auto text = runStairmap("eval '" + dir + "/cloud_8.json'", dir);
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("false positives on true flights (heights misread, or a flight read "
+                            "twice): 2 of 2"),
+              std::string::npos)
+        << text.out;
+    EXPECT_NE(text.out.find("cloud_8.json 2 (2 on a true flight)"), std::string::npos) << text.out;
     // Without a truth file the command fails cleanly.
     std::ofstream(dir + "/orphan.json") << det.dump();
     const auto bad = runStairmap("eval '" + dir + "/orphan.json'", dir);

@@ -180,6 +180,32 @@ TEST(Evaluation, DuplicateDetectionIsAFalsePositiveAndWorldTruthIgnoresDirection
     EXPECT_EQ(out.false_positives, 1);
 }
 
+TEST(Evaluation, FalsePositivesOnTrueFlightsAreCountedApart) {
+    // One ascending flight; detections: on it (matched), on it again (a second reading), on its
+    // nosings' places 10 cm too high (heights misread), 1 m beside it, and on it the wrong way
+    // (rule 1 fails: not a reading of this flight). Four false positives, two on the flight.
+    EvaluationSample sample;
+    sample.kind = "ascending";
+    sample.truth = robotTruth({flight(StairDirection::Ascending)});
+    const StaircaseTruth& truth = sample.truth.staircases[0];
+    const Staircase on = detectionOn(truth, StairDirection::Ascending, 0.45);
+    sample.detections = {
+        on,
+        on,
+        detectionOn(truth, StairDirection::Ascending, 0.45, Eigen::Vector3d(0, 0, 0.10)),
+        detectionOn(truth, StairDirection::Ascending, 0.45, Eigen::Vector3d(0, 1.0, 0)),
+        detectionOn(truth, StairDirection::Descending, 0.45),
+    };
+    const SampleOutcome out = evaluateSample(sample);
+    EXPECT_EQ(out.matched, 1);
+    EXPECT_EQ(out.false_positives, 4);
+    EXPECT_EQ(out.false_positives_on_flights, 2);
+    const auto report = evaluate({sample, sample});
+    EXPECT_EQ(report.total.false_positives, 8);
+    EXPECT_EQ(report.total.false_positives_on_flights, 4);
+    EXPECT_EQ(row(report, "ascending").false_positives_on_flights, 4);
+}
+
 TEST(Evaluation, EmptyInputAndBadParams) {
     const auto report = evaluate({});
     EXPECT_TRUE(report.kinds.empty());

@@ -14,6 +14,7 @@ json rowJson(const KindSummary& r) {
             {"samples", r.samples},
             {"detections", r.detections},
             {"false_positives", r.false_positives},
+            {"false_positives_on_flights", r.false_positives_on_flights},
             {"mae_height_cm", r.mae_height_cm},
             {"mae_depth_cm", r.mae_depth_cm},
             {"mae_width_cm", r.mae_width_cm},
@@ -34,9 +35,13 @@ json sampleJson(const SampleOutcome& s) {
                           {"start_cm", e.start_cm},
                           {"both_sides_bounded", e.both_sides_bounded}});
     }
-    return {{"name", s.name},       {"kind", s.kind},
-            {"expected", s.expected}, {"matched", s.matched},
-            {"false_positives", s.false_positives}, {"missed", s.missed},
+    return {{"name", s.name},
+            {"kind", s.kind},
+            {"expected", s.expected},
+            {"matched", s.matched},
+            {"false_positives", s.false_positives},
+            {"false_positives_on_flights", s.false_positives_on_flights},
+            {"missed", s.missed},
             {"errors", errors}};
 }
 
@@ -81,6 +86,11 @@ std::string formatEvaluationTable(const EvaluationReport& report) {
         << "                                            MAE cm   MAE cm   MAE cm     MAE cm  MAE cm        ms   sides   MAE cm\n";
     for (const auto& k : report.kinds) out << rowText(k);
     out << rowText(report.total);
+    // Which false positives a fix of the readings would turn into matches, and which lie where no
+    // flight is.
+    out << "false positives on true flights (heights misread, or a flight read twice): "
+        << report.total.false_positives_on_flights << " of " << report.total.false_positives
+        << "\n";
     return out.str();
 }
 

@@ -11,12 +11,17 @@
 namespace stairmap::io {
 
 /// {"params":{...}, "kinds":[row...], "total":row, "samples":[{name, kind, expected, matched,
-///  false_positives, missed:[...], errors:[{height_cm, depth_cm, width_cm, location_cm}]}]}
-/// where row = {kind, clouds, samples, detections, false_positives, mae_height_cm, mae_depth_cm,
-/// mae_width_cm, mae_location_cm, mean_time_ms (null if unknown)}.
+///  false_positives, false_positives_on_flights, missed:[...], errors:[{height_cm, depth_cm,
+///  width_cm, location_cm, start_cm, both_sides_bounded}]}]}
+/// where row = {kind, clouds, samples, detections, false_positives, false_positives_on_flights,
+/// mae_height_cm, mae_depth_cm, mae_width_cm, mae_location_cm, mae_start_cm, bounded,
+/// mae_width_bounded_cm, mean_time_ms (null if unknown)}. false_positives_on_flights: of the
+/// false positives, those lying on a true flight (core/Evaluation.h).
+
+/// Fixed-width text table, one row per kind plus "all", then a line with how many of all false
+/// positives lie on true flights.
 nlohmann::json evaluationToJson(const EvaluationReport& report, const EvaluationParams& params);
 
-/// Fixed-width text table, one row per kind plus "all".
 std::string formatEvaluationTable(const EvaluationReport& report);
 
 }  // namespace stairmap::io
