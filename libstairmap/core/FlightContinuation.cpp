@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/FlightPoints.h"
 #include "core/LineFusion.h"
 #include "core/MissingNosings.h"
 
@@ -84,20 +85,11 @@ bool showsTread(const TreadWindow& w, double half, const FlightContinuationParam
            w.spread() >= p.min_spread_fraction * 2.0 * half;
 }
 
-/// A float box around a strip (distance s along `up` in [s_lo, s_hi] from `c`, |t| along `u`
-/// at most `half`) and heights [z_lo, z_hi], padded by a centimetre: a point outside it is
-/// outside the strip (most of a cloud; two float comparisons reject it), one inside is tested
-/// exactly. A NaN coordinate fails the box.
-struct StripBox {
-    Eigen::Vector3f lo, hi;
-    bool mayContain(const Eigen::Vector3f& q) const {
-        return q.z() >= lo.z() && q.z() <= hi.z() && q.x() >= lo.x() && q.x() <= hi.x() &&
-               q.y() >= lo.y() && q.y() <= hi.y();
-    }
-};
-
-StripBox stripBox(const Eigen::Vector2d& c, const Eigen::Vector2d& up, const Eigen::Vector2d& u,
-                  double s_lo, double s_hi, double half, double z_lo, double z_hi) {
+/// Float bounds (FlightPoints.h) around a strip (distance s along `up` in [s_lo, s_hi] from `c`,
+/// |t| along `u` at most `half`) and heights [z_lo, z_hi], padded by a centimetre: a point outside
+/// them is outside the strip (most of a cloud), one inside is tested exactly.
+FloatBounds stripBox(const Eigen::Vector2d& c, const Eigen::Vector2d& up, const Eigen::Vector2d& u,
+                     double s_lo, double s_hi, double half, double z_lo, double z_hi) {
     constexpr double kPad = 0.01;  // [m] far more than float rounding at 100 m
     Eigen::Vector2d lo = c + s_lo * up, hi = lo;
     for (const double a : {s_lo, s_hi})
@@ -149,8 +141,8 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
     };
     std::vector<WindowPoint> window;
     std::vector<double> tread, beyond;
-    const StripBox box = stripBox(c, step.up, u, s_first, s_beyond, half, last.z - p.tread_dz_m,
-                                  std::numeric_limits<double>::max());
+    const FloatBounds box = stripBox(c, step.up, u, s_first, s_beyond, half, last.z - p.tread_dz_m,
+                                     std::numeric_limits<double>::max());
     for (const Eigen::Vector3f& q : cloud) {
         if (!box.mayContain(q)) continue;
         const Eigen::Vector2d d(q.x() - c.x(), q.y() - c.y());
@@ -294,7 +286,7 @@ bool treadsRiseAlongTheRun(const PointCloud& cloud, const std::vector<LineSegmen
     const double z_lo = first.z - step.rise, z_hi = edges.back().z + step.rise;
     // The ramp: least-squares line z = a + b s; the stair: the profile its edges make.
     double n = 0, ss = 0, sz = 0, sss = 0, ssz = 0, szz = 0, stair = 0;
-    const StripBox box = stripBox(c, step.up, u, 0.0, edge_s.back(), half, z_lo, z_hi);
+    const FloatBounds box = stripBox(c, step.up, u, 0.0, edge_s.back(), half, z_lo, z_hi);
     const std::size_t stride = std::max(1, p.ramp_point_stride);
     for (std::size_t i = 0; i < cloud.size(); i += stride) {
         const Eigen::Vector3f& q = cloud[i];

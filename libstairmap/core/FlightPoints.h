@@ -22,10 +22,10 @@ struct FlightBox {
     }
 };
 
-/// Float bounds around boxes, padded by a centimetre (far more than float rounding at 100 m): a
-/// point outside them lies outside every box they hold and is rejected without FlightBox::
-/// contains' float-to-double conversions (most of a cloud); one inside is then tested exactly. A
-/// NaN coordinate fails them.
+/// Float bounds around a region (boxes, a strip), padded by a centimetre (far more than float
+/// rounding at 100 m): a point outside them lies outside the region and is rejected by float
+/// comparisons alone, without converting its coordinates to double (most of a cloud); one inside
+/// is then tested exactly. A NaN coordinate fails them.
 struct FloatBounds {
     Eigen::Vector3f lo, hi;
     bool mayContain(const Eigen::Vector3f& q) const {
