@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "core/MissingNosings.h"
@@ -429,6 +430,19 @@ bool gapsTurnAsTheyRise(const std::vector<std::pair<int, Radial>>& idx, double t
     return true;
 }
 
+/// How many unseen levels lie under a helix's lowest seen one, `first_z` above the floor, down to
+/// the floor: 0 when it starts low enough, -1 when it may not start there (too few seen levels,
+/// not a whole number of rises above the floor, or too many levels below).
+int levelsBelowFirst(double first_z, double rise, int seen, const SpiralSearchParams& p) {
+    if (first_z < p.min_first_height_m) return -1;
+    if (first_z <= p.max_first_height_m) return 0;
+    if (seen < p.high_start_min_seen_levels) return -1;
+    const long rises = std::lround(first_z / rise);
+    if (rises < 1 || std::abs(first_z - rises * rise) > p.height_tolerance_m) return -1;
+    const int below = static_cast<int>(rises) - 1;
+    return below <= p.high_start_max_levels_below ? below : -1;
+}
+
 /// The spiral of one axis candidate, if its levels make a stair (empty edges otherwise).
 SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vector<Radial>& in,
                          const SpiralSearchParams& p) {
@@ -440,7 +454,8 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
     const double first_z = idx.front().second.z - p.floor_z;
     if (levels < p.min_steps || !riseOfAStair(rise, levels, static_cast<int>(idx.size()), p))
         return f;
-    if (first_z < p.min_first_height_m || first_z > p.max_first_height_m) return f;
+    const int below = levelsBelowFirst(first_z, rise, static_cast<int>(idx.size()), p);
+    if (below < 0) return f;
     const double step_angle = std::abs(h.omega) * rise;
     if (step_angle < p.min_step_angle_deg * kDeg || step_angle > p.max_step_angle_deg * kDeg) return f;
     if (!gapsTurnAsTheyRise(idx, p.gap_turn_tolerance_steps)) return f;
@@ -450,6 +465,12 @@ SpiralFlight buildFlight(const SpiralLines& sl, const Helix& h, const std::vecto
     const double outer = upperMedian(outers);
     const double run = (inner + outer) * std::sin(0.5 * step_angle);  // chord at mid radius
     if (run < p.min_run_m || run > p.max_run_m) return f;
+    const Radial& lowest = idx.front().second;
+    for (int k = below; k >= 1; --k) {  // levels under the lowest seen one: on the helix
+        const double dz = -k * rise;
+        f.edges.push_back(unseenRadialNosing(h.axis, lowest.phi + lowest.rot + h.omega * dz,
+                                             lowest.near, lowest.far, lowest.z + dz));
+    }
     for (std::size_t i = 0; i < idx.size(); ++i) {
         if (i > 0) {  // levels between two seen ones: on the helix, radii interpolated
             const auto& [ka, a] = idx[i - 1];
@@ -515,6 +536,7 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
         SpiralSearchParams fewer = p;
         fewer.min_seen_levels = p.few_seen_levels;
         fewer.max_missing_levels = p.few_max_missing_levels;
+        fewer.high_start_min_seen_levels = std::numeric_limits<int>::max();
         *few = buildFlight(sl, h, in, fewer);
     }
     return f;

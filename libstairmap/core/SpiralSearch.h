@@ -38,7 +38,15 @@ namespace stairmap {
 struct SpiralSearchParams {
     double floor_z = 0.0;                  ///< [m] floor the robot stands on
     double min_first_height_m = 0.05;      ///< [m] lowest allowed nosing above the floor
-    double max_first_height_m = 1.05;      ///< [m] the lowest found nosing must be below this
+    double max_first_height_m = 1.05;      ///< [m] the lowest found nosing must be below this ...
+    /// [-] ... unless the helix holds this many seen levels and its lowest one lies a whole number
+    /// of rises (within height_tolerance_m) above the floor: an elevation map keeps only the top
+    /// surface, so where a spiral turns more than once its upper wedges hide the lower ones and
+    /// only levels 1.2 m and more above the floor are seen (dev5 r0683, dev6 r0671: 6 levels).
+    /// The levels below are put back on the helix down to the floor. Few-level helices must
+    /// start low.
+    int high_start_min_seen_levels = 6;
+    int high_start_max_levels_below = 8;   ///< [-] at most this many levels put back below
     double min_rise_m = 0.11;              ///< [m] rise range (DetectorParams condition 1)
     double max_rise_m = 0.30;              ///< [m]
     /// [m] a helix's rise may read this much below min_rise_m (rises of 0.10-0.11 m read

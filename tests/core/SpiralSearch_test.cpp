@@ -306,6 +306,45 @@ TEST(SpiralSearch, LinesPartlyHiddenByTheColumnAloneMakeNoSpiral) {
     EXPECT_TRUE(findSpirals(hidden, {}, paramsFor(h)).empty());
 }
 
+/// Lines of levels `first`..`last` of a 25 deg spiral (an elevation map of a spiral turning more
+/// than once keeps only its upper wedges), the lowest `lowest_dz` [m] off its level.
+std::vector<LineSegment> upperLevelLines(const Helix& h, int first, int last, double lowest_dz) {
+    std::vector<LineSegment> lines;
+    for (int k = first; k <= last; ++k)
+        lines.push_back(radialLine(h, h.angleOf(k), h.zOf(k) + (k == first ? lowest_dz : 0.0)));
+    return lines;
+}
+
+TEST(SpiralSearch, ASpiralSeenOnlyHighIsPutBackDownToTheFloor) {
+    Helix h;
+    h.step = 25.0 * kDeg;
+    h.phi0 = 10.0 * kDeg;
+    // Levels 7-12 seen (1.26 m and more above the floor, past max_first_height_m).
+    const auto spirals = findSpirals(upperLevelLines(h, 7, 12, 0.0), {}, paramsFor(h));
+    ASSERT_EQ(spirals.size(), 1u);
+    const SpiralFlight& f = spirals[0];
+    ASSERT_EQ(f.edges.size(), 12u);
+    EXPECT_EQ(f.seen_levels, 6);
+    for (int k = 1; k <= 12; ++k) {
+        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 0.005) << k;
+        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
+        EXPECT_EQ(f.edges[k - 1].num_points == 0, k < 7) << k;
+    }
+}
+
+TEST(SpiralSearch, AHighSpiralMustHoldSixLevelsAWholeNumberOfRisesAboveTheFloor) {
+    Helix h;
+    h.step = 25.0 * kDeg;
+    h.phi0 = 10.0 * kDeg;
+    EXPECT_TRUE(findSpirals(upperLevelLines(h, 8, 12, 0.0), {}, paramsFor(h)).empty());  // 5 levels
+    // The whole helix half a rise off the floor's height: no stair standing on that floor.
+    std::vector<LineSegment> off_floor = upperLevelLines(h, 7, 12, 0.0);
+    for (LineSegment& l : off_floor) l.z += 0.5 * h.rise;
+    EXPECT_TRUE(findSpirals(off_floor, {}, paramsFor(h)).empty());
+    // Levels 11-16: ten levels below would be put back, more than allowed.
+    EXPECT_TRUE(findSpirals(upperLevelLines(h, 11, 16, 0.0), {}, paramsFor(h)).empty());
+}
+
 /// Tread k's outer rim seen as a line (an elevation map cropped at the spiral): the chord of the
 /// outer arc from nosing k's angle to nosing k+1's.
 LineSegment rimChord(const Helix& h, int k) {
