@@ -33,6 +33,7 @@
 #include "core/StaircaseGeometry.h"
 #include "core/StartSurface.h"
 #include "core/StepExtent.h"
+#include "core/TallRisers.h"
 #include "core/TopView.h"
 #include "core/TreadHeights.h"
 #include "core/TurningFlight.h"
@@ -951,6 +952,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     dropDescentsFromASlope(cloud_robot, floor, params_, result.staircases);
     dropSecondViews(result.staircases);  // the chains Algorithm 2 left: levels differ (dev3 r0042)
     dropReverseReadings(result.staircases);  // a pit's flight read both ways (dev5 r0284)
+    dropFlightsOverTallRisers(cloud_robot, result.staircases);  // bleachers (neg32032 r0850)
     if (debug) debug->accepted = result.staircases;
     return result;
 }
