@@ -85,6 +85,18 @@ double centreError(const LineSegment& e, const Helix& h, int k) {
     return (e.centre() - (h.axis + 0.5 * (h.inner + h.outer) * u)).norm();
 }
 
+/// Spiral `f` has `levels` edges, edge k (1-based) at nosing k's height and place, put back
+/// (no points) exactly where `put_back(k)`.
+template <typename PutBack>
+void expectLevelsOnTheHelix(const SpiralFlight& f, const Helix& h, int levels, PutBack put_back) {
+    ASSERT_EQ(f.edges.size(), static_cast<std::size_t>(levels));
+    for (int k = 1; k <= levels; ++k) {
+        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 0.005) << k;
+        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
+        EXPECT_EQ(f.edges[k - 1].num_points == 0, put_back(k)) << k;
+    }
+}
+
 SpiralSearchParams paramsFor(const Helix& h) {
     SpiralSearchParams p;
     p.floor_z = h.floor_z;
@@ -118,14 +130,8 @@ TEST(SpiralSearch, PutsBackUnseenLevelsOnTheHelix) {
     for (int k : {1, 3, 5, 7, 8}) front.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
     const auto spirals = findSpirals(front, {}, paramsFor(h));
     ASSERT_EQ(spirals.size(), 1u);
-    const SpiralFlight& f = spirals[0];
-    ASSERT_EQ(f.edges.size(), 8u);
-    EXPECT_EQ(f.seen_levels, 5);
-    for (int k = 1; k <= 8; ++k) {
-        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 0.005) << k;
-        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
-        EXPECT_EQ(f.edges[k - 1].num_points == 0, k == 2 || k == 4 || k == 6) << k;
-    }
+    EXPECT_EQ(spirals[0].seen_levels, 5);
+    expectLevelsOnTheHelix(spirals[0], h, 8, [](int k) { return k == 2 || k == 4 || k == 6; });
 }
 
 // Four seen levels are one short of a spiral; asked for (few_seen_levels), the helix is reported
@@ -322,14 +328,8 @@ TEST(SpiralSearch, ASpiralSeenOnlyHighIsPutBackDownToTheFloor) {
     // Levels 7-12 seen (1.26 m and more above the floor, past max_first_height_m).
     const auto spirals = findSpirals(upperLevelLines(h, 7, 12, 0.0), {}, paramsFor(h));
     ASSERT_EQ(spirals.size(), 1u);
-    const SpiralFlight& f = spirals[0];
-    ASSERT_EQ(f.edges.size(), 12u);
-    EXPECT_EQ(f.seen_levels, 6);
-    for (int k = 1; k <= 12; ++k) {
-        EXPECT_NEAR(f.edges[k - 1].z, h.zOf(k), 0.005) << k;
-        EXPECT_LT(centreError(f.edges[k - 1], h, k), 0.03) << k;
-        EXPECT_EQ(f.edges[k - 1].num_points == 0, k < 7) << k;
-    }
+    EXPECT_EQ(spirals[0].seen_levels, 6);
+    expectLevelsOnTheHelix(spirals[0], h, 12, [](int k) { return k < 7; });
 }
 
 TEST(SpiralSearch, AHighSpiralMustHoldSixLevelsAWholeNumberOfRisesAboveTheFloor) {
