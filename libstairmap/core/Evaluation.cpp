@@ -55,18 +55,6 @@ PairErrors pairErrors(const Staircase& d, const StaircaseTruth& g) {
     return e;
 }
 
-/// Whether detection `d` meets the matching rule's direction and xy parts for an expected true
-/// staircase of `truth`, whatever its heights.
-bool liesOnAFlight(const Staircase& d, const SceneTruth& truth, const EvaluationParams& params) {
-    if (d.steps.empty()) return false;
-    for (const auto& g : truth.staircases) {
-        if (!expected(g, truth) || g.nosings.empty()) continue;
-        if (g.seen_as && d.direction != *g.seen_as) continue;
-        if (edgeDistances(d, g).median_xy_m < params.max_xy_m) return true;
-    }
-    return false;
-}
-
 int kindOrder(const std::string& kind) {
     static const std::vector<std::string> order = {"ascending", "hollow", "spiral",
                                                    "descending", "debris", "negative"};
@@ -101,6 +89,9 @@ SampleOutcome evaluateSample(const EvaluationSample& sample, const EvaluationPar
     out.kind = sample.kind;
     const auto& stairs = sample.truth.staircases;
     std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;  // cost, det, gt
+    // Detections meeting the direction and xy parts of the rule for some expected staircase,
+    // whatever their heights: unmatched, they lie on a true flight.
+    std::vector<bool> on_a_flight(sample.detections.size(), false);
     for (std::size_t g = 0; g < stairs.size(); ++g) {
         if (!expected(stairs[g], sample.truth) || stairs[g].nosings.empty()) continue;
         ++out.expected;
@@ -109,7 +100,9 @@ SampleOutcome evaluateSample(const EvaluationSample& sample, const EvaluationPar
             if (stairs[g].seen_as && det.direction != *stairs[g].seen_as) continue;
             if (det.steps.empty()) continue;
             const auto dist = edgeDistances(det, stairs[g]);
-            if (dist.median_xy_m < params.max_xy_m && dist.median_z_m < params.max_z_m)
+            if (dist.median_xy_m >= params.max_xy_m) continue;
+            on_a_flight[d] = true;
+            if (dist.median_z_m < params.max_z_m)
                 candidates.emplace_back(dist.median_xy_m + dist.median_z_m, d, g);
         }
     }
@@ -123,8 +116,7 @@ SampleOutcome evaluateSample(const EvaluationSample& sample, const EvaluationPar
     }
     out.false_positives = static_cast<int>(std::count(det_used.begin(), det_used.end(), false));
     for (std::size_t d = 0; d < sample.detections.size(); ++d)
-        if (!det_used[d] && liesOnAFlight(sample.detections[d], sample.truth, params))
-            ++out.false_positives_on_flights;
+        out.false_positives_on_flights += !det_used[d] && on_a_flight[d];
     for (std::size_t g = 0; g < stairs.size(); ++g) {
         if (!gt_used[g] && expected(stairs[g], sample.truth)) out.missed.push_back(stairs[g].name);
     }
