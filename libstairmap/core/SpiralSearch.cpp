@@ -519,9 +519,11 @@ bool pairHelix(const SpiralLines& sl, int i, int j, const SpiralSearchParams& p,
 }
 
 /// The spiral through the pair (i, j), with the lines it uses (empty edges when none). Where it
-/// has too few seen levels and `few` is given, the spiral of p.few_seen_levels goes there.
+/// has too few seen levels and `few` is given, the spiral of p.few_seen_levels goes there; where
+/// it is none and `glimpse` is given, its axis goes there if it holds more seen levels.
 SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector<char>& used,
-                          const SpiralSearchParams& p, std::vector<Radial>& in, SpiralFlight* few) {
+                          const SpiralSearchParams& p, std::vector<Radial>& in, SpiralFlight* few,
+                          SpiralGlimpse* glimpse) {
     Helix h;
     if (!pairHelix(sl, i, j, p, h)) return {};
     in = collectInliers(sl, h, 0.0, p);
@@ -532,6 +534,10 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
              in.end());
     in = withExtraLevels(sl, h, std::move(in), used, p);
     SpiralFlight f = buildFlight(sl, h, in, p);
+    if (f.edges.empty() && glimpse) {
+        const int seen = static_cast<int>(levelsOf(in, p.height_tolerance_m).size());
+        if (seen > glimpse->seen_levels) *glimpse = {h.axis, seen};
+    }
     if (f.edges.empty() && few) {
         SpiralSearchParams fewer = p;
         fewer.min_seen_levels = p.few_seen_levels;
@@ -558,6 +564,7 @@ SpiralFlight bestOfPairs(const SpiralLines& sl, const std::vector<char>& used,
         for (int j = 0; j < n; ++j) {
             const double dz = sl[j].z - sl[i].z;
             if (used[i] || used[j] || (explored[i] && explored[j])) continue;
+            if (p.pair_lines > 0 && i >= p.pair_lines && j >= p.pair_lines) continue;
             if (dz < lowestRise(p) - p.height_tolerance_m || dz > 2.0 * p.max_rise_m) continue;
             std::vector<Radial> in;
             SpiralFlight few;
@@ -587,13 +594,14 @@ SpiralFlight bestOfPairs(const SpiralLines& sl, const std::vector<char>& used,
 }
 
 /// Best spiral of radial nosings among the lines not yet used (empty edges when none), and the
-/// best of p.few_seen_levels seen levels into `few` when given.
+/// best of p.few_seen_levels seen levels into `few` and the glimpse into `glimpse` when given.
 SpiralFlight bestSpiral(const SpiralLines& sl, const std::vector<char>& used,
-                        const SpiralSearchParams& p, std::vector<int>& inliers, SpiralFlight* few) {
+                        const SpiralSearchParams& p, std::vector<int>& inliers, SpiralFlight* few,
+                        SpiralGlimpse* glimpse) {
     return bestOfPairs(
         sl, used, p, inliers,
         [&](int i, int j, std::vector<Radial>& in, SpiralFlight* few_here) {
-            return spiralOfPair(sl, i, j, used, p, in, few_here);
+            return spiralOfPair(sl, i, j, used, p, in, few_here, glimpse);
         },
         few);
 }
@@ -756,7 +764,8 @@ SpiralFlight bestRimSpiral(const SpiralLines& sl, const std::vector<char>& used,
 std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drops,
                                       const std::vector<LineSegment>& back_drops,
                                       const SpiralSearchParams& params,
-                                      std::vector<SpiralFlight>* few_level) {
+                                      std::vector<SpiralFlight>* few_level,
+                                      SpiralGlimpse* glimpse) {
     // a wedge's edges read as either drop, depending on the view
     const SpiralLines sl(front_drops, back_drops);
     std::vector<SpiralFlight> out;
@@ -766,7 +775,7 @@ std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drop
     for (int n = 0; n < params.max_spirals; ++n) {
         std::vector<int> inliers;
         SpiralFlight few;
-        SpiralFlight f = bestSpiral(sl, used, params, inliers, want_few ? &few : nullptr);
+        SpiralFlight f = bestSpiral(sl, used, params, inliers, want_few ? &few : nullptr, glimpse);
         if (f.edges.empty()) {  // the search over the lines no spiral took
             if (!few.edges.empty()) few_level->push_back(std::move(few));
             break;

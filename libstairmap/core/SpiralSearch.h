@@ -76,6 +76,10 @@ struct SpiralSearchParams {
     /// (tests/pipeline/TwoFloorDrive); 5 keeps dev recall and lowers spiral rise MAE
     int min_seen_levels = 5;
     int max_spirals = 2;                   ///< [-] search repeats on the remaining lines
+    /// [-] when > 0, an axis is looked for only through pairs that hold one of the first this many
+    /// lines of front_drops (lines of another kind added to a search already made on the rest:
+    /// StairDetector's tread nosings); every line may still be an inlier. 0 = every pair.
+    int pair_lines = 0;
     /// [-] findSpirals' `few_level`: the best helix of this many seen levels (fewer than
     /// min_seen_levels) among the lines no spiral took, everything else asked as of a spiral.
     /// 0 = none.
@@ -126,13 +130,24 @@ struct SpiralFlight {
     int seen_levels = 0;                             ///< levels with a line of their own
 };
 
+/// Where no spiral was found: the axis whose helix held the most seen levels (findSpirals'
+/// `glimpse`). A spiral whose nosings are seen too poorly for a spiral often shows its axis through
+/// three of them (StairDetector then looks at its treads there).
+struct SpiralGlimpse {
+    Eigen::Vector2d axis = Eigen::Vector2d::Zero();  ///< [m] XY
+    int seen_levels = 0;                             ///< 0 = none
+};
+
 /// Spirals among the lines of both drop directions (real z, any order; `front_drops` lower towards
 /// the robot at the origin, `back_drops` lower away from it). Ascending flights only. With
 /// `few_level` given and params.few_seen_levels set, the best spiral of that many seen levels
-/// among the lines left once the search ends (at most one) goes there.
+/// among the lines left once the search ends (at most one) goes there. With `glimpse` given, the
+/// helix of most seen levels (three inlier lines at least) among those that made no spiral goes
+/// there.
 std::vector<SpiralFlight> findSpirals(const std::vector<LineSegment>& front_drops,
                                       const std::vector<LineSegment>& back_drops,
                                       const SpiralSearchParams& params,
-                                      std::vector<SpiralFlight>* few_level = nullptr);
+                                      std::vector<SpiralFlight>* few_level = nullptr,
+                                      SpiralGlimpse* glimpse = nullptr);
 
 }  // namespace stairmap

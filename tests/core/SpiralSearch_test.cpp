@@ -412,5 +412,50 @@ TEST(SpiralSearch, NoSpiralInStraightFlightsOrUnorderedRadialLines) {
     EXPECT_TRUE(findSpirals(three, {}, p).empty());
 }
 
+// Lines of another kind added to a search already made (StairDetector's tread nosings): with
+// pair_lines, an axis is looked for only through pairs holding one of the first lines, but every
+// line may be an inlier.
+TEST(SpiralSearch, PairLinesLimitTheAxisPairsNotTheInliers) {
+    const Helix h;
+    std::vector<LineSegment> lines;
+    for (int k = 1; k <= 5; ++k) lines.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    SpiralSearchParams p = paramsFor(h);
+    p.rim_search = false;
+    // Level 3's line first: every pair holding it points at the axis; all five levels are found.
+    std::swap(lines[0], lines[2]);
+    p.pair_lines = 1;
+    auto spirals = findSpirals(lines, {}, p);
+    ASSERT_EQ(spirals.size(), 1u);
+    EXPECT_EQ(spirals[0].seen_levels, 5);
+    // A first line off every helix (a straight nosing far away): no pair holding it makes a spiral,
+    // though the other five would.
+    LineSegment stray = radialLine(h, h.angleOf(3), h.zOf(3));
+    stray.start += Eigen::Vector2d(3.0, 3.0);
+    stray.end += Eigen::Vector2d(3.0, 3.0);
+    stray.rho = Eigen::Vector2d(std::cos(stray.theta), std::sin(stray.theta)).dot(stray.start);
+    if (stray.rho < 0) stray.rho = -stray.rho, stray.theta += M_PI;
+    lines.insert(lines.begin(), stray);
+    EXPECT_TRUE(findSpirals(lines, {}, p).empty());
+    p.pair_lines = 0;
+    EXPECT_EQ(findSpirals(lines, {}, p).size(), 1u);
+}
+
+// Three seen levels make no spiral, but their axis is glimpsed (where StairDetector looks at the
+// treads); where a spiral is found nothing is glimpsed from its lines.
+TEST(SpiralSearch, GlimpsesTheAxisOfAHelixOfThreeSeenLevels) {
+    const Helix h;
+    std::vector<LineSegment> three;
+    for (int k = 1; k <= 3; ++k) three.push_back(radialLine(h, h.angleOf(k), h.zOf(k)));
+    SpiralGlimpse glimpse;
+    EXPECT_TRUE(findSpirals(three, {}, paramsFor(h), nullptr, &glimpse).empty());
+    EXPECT_EQ(glimpse.seen_levels, 3);
+    EXPECT_LT((glimpse.axis - h.axis).norm(), 0.01);
+    // Two levels are no glimpse (a pair alone always points somewhere).
+    SpiralGlimpse none;
+    three.pop_back();
+    findSpirals(three, {}, paramsFor(h), nullptr, &none);
+    EXPECT_EQ(none.seen_levels, 0);
+}
+
 }  // namespace
 }  // namespace stairmap
