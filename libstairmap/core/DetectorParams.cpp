@@ -81,6 +81,10 @@ void DetectorParams::validate() const {
     }
     if (few_level_spiral_levels != 0)
         requireRange(few_level_spiral_levels, 2, 4, "few_level_spiral_levels");
+    if (tread_spiral_cell_m != 0.0) {
+        requireRange(tread_spiral_cell_m, 0.02, 0.2, "tread_spiral_cell_m");
+        requireRange(tread_spiral_window_m, 0.5, 10.0, "tread_spiral_window_m");
+    }
     requireRange(point_sigma_m, 1e-5, 1.0, "point_sigma_m");
     requireRange(merge_chi2, 0.0, 1e6, "merge_chi2");
     requireRange(vertical_merge_dz_m, 0.0, 1.0, "vertical_merge_dz_m");

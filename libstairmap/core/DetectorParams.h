@@ -87,6 +87,18 @@ struct DetectorParams {
     /// find on the same spiral (dev2 r0005, r0091) and read rises and runs worse (dev rise MAE
     /// 0.244 -> 0.279 cm). 0 = off; else 2 .. 4.
     int few_level_spiral_levels = 4;
+    /// [m] spirals read from their treads (TreadBoundaries): where the spiral search found no
+    /// spiral but glimpsed an axis through three seen levels, a coarse top surface of this cell
+    /// size is made about it, nosings are read as the boundaries between its flat patches one rise
+    /// apart, and the search runs once more on them with the first pass's lines, four seen levels
+    /// enough; a spiral it finds is added after every pass where no flight found lies on it (as
+    /// few_level_spiral_levels). A depth camera over a spiral's foot shows the wedge treads well
+    /// but its row lines miss the nosings seen along the line of sight (dev6 r0718). 0 = off; else
+    /// 0.02 .. 0.2.
+    double tread_spiral_cell_m = 0.05;
+    /// [m] half size of that surface about the glimpsed axis (a spiral's outer radius is at most
+    /// 0.3 + 2.5 m on the benchmark, most are below 1.5 m)
+    double tread_spiral_window_m = 3.0;
     double point_sigma_m = 0.01;      ///< [m] std. dev. of a point for the weighted line fit
     double merge_chi2 = 9.21;         ///< [-] Mahalanobis gate to merge lines (chi2, 2 dof, 99 %)
     double vertical_merge_dz_m = 0.06;    ///< [m] lines of nearby rows closer in z are fused ...

@@ -16,6 +16,7 @@
 #include "core/FloorEstimation.h"
 #include "core/FloorNoise.h"
 #include "core/FloorNosing.h"
+#include "core/HeightGrid.h"
 #include "core/LineFusion.h"
 #include "core/LongTreads.h"
 #include "core/MissingNosings.h"
@@ -35,6 +36,7 @@
 #include "core/StepExtent.h"
 #include "core/TallRisers.h"
 #include "core/TopView.h"
+#include "core/TreadBoundaries.h"
 #include "core/TreadHeights.h"
 #include "core/TurningFlight.h"
 
@@ -621,10 +623,73 @@ SpiralSearchParams spiralParams(double floor_z, const DetectorParams& p) {
     return sp;
 }
 
+/// [m] a nosing's two tread patches may differ by this much more or less than a rise: a patch's
+/// height is the mean of its cells' highest points, which a depth camera's noise lifts
+constexpr double kTreadRiseNoise = 0.03;
+/// [-] seen levels enough for a spiral with tread nosings among its lines: four flat wedges a rise
+/// apart turning about one axis (the row lines alone need five, SpiralSearchParams)
+constexpr int kTreadSpiralSeenLevels = 4;
+/// [-] the treads are looked at only about an axis the first search glimpsed through this many
+/// seen levels: with 3, 18 % of the development clouds are looked at (2: 44 %), and as many dev
+/// spirals are found (10) as when every cloud's surface about the robot was
+constexpr int kTreadGlimpseLevels = 3;
+/// [m] the surface's cells start this far below the floor (its band, TreadBoundaryParams)
+constexpr double kTreadBelowFloor = 0.05;
+/// [-] seen levels of a spiral that must be tread nosings: with one, the others are the row lines
+/// the first search already found no spiral in, and a level LiDAR's ring heights on the risers
+/// made a helix of twice the rise through one true tread nosing (check9 r0147, 12 cm off; seen
+/// after scoring the untuned sets, which then lost two more readings 11 cm and 87 cm off; dev
+/// lost one spiral read well, dev4 r0111)
+constexpr int kTreadSpiralTreadLevels = 2;
+
+/// Seen levels of spiral `f` at a tread nosing's height (1 cm) whose line passes by its axis
+/// (SpiralSearchParams::extra_max_axis_offset_m).
+int levelsOnTreadNosings(const SpiralFlight& f, const std::vector<LineSegment>& tread_nosings) {
+    const double max_offset = SpiralSearchParams().extra_max_axis_offset_m;
+    int levels = 0;
+    for (const LineSegment& e : f.edges) {
+        if (e.num_points == 0) continue;  // put back
+        levels +=
+            std::any_of(tread_nosings.begin(), tread_nosings.end(), [&](const LineSegment& l) {
+                return std::abs(l.z - e.z) < 0.01 && std::abs(l.distanceTo(f.axis)) < max_offset;
+            });
+    }
+    return levels;
+}
+
+/// Spirals whose nosings show as boundaries between flat treads of a coarse top surface about
+/// `axis` (TreadBoundaries, DetectorParams::tread_spiral_cell_m): the spiral search once more, on
+/// those lines and the first pass's, through pairs that hold a tread nosing. They go to
+/// `few_level`, to be placed where no flight lies once every pass has run.
+void addTreadSpirals(const PointCloud& cloud, const Eigen::Vector2d& axis,
+                     const std::vector<LineSegment>& front_drops,
+                     const std::vector<LineSegment>& back_drops, double floor_z,
+                     const DetectorParams& p, std::vector<Staircase>& few_level) {
+    thread_local HeightGrid surface;  // scratch re-used between calls
+    surface.fill(cloud, axis, p.tread_spiral_window_m, p.tread_spiral_cell_m,
+                 floor_z - kTreadBelowFloor, floor_z + p.max_height_above_floor_m);
+    TreadBoundaryParams tb;
+    tb.floor_z = floor_z;
+    tb.min_rise_m = p.min_step_height_m - kTreadRiseNoise;
+    tb.max_rise_m = p.max_step_height_m + kTreadRiseNoise;
+    std::vector<LineSegment> lines = treadBoundaryNosings(surface, tb);
+    if (lines.empty()) return;
+    SpiralSearchParams sp = spiralParams(floor_z, p);
+    sp.min_seen_levels = kTreadSpiralSeenLevels;
+    const std::vector<LineSegment> tread_nosings = lines;
+    sp.pair_lines = static_cast<int>(lines.size());
+    sp.rim_search = false;  // the first search looked for rims
+    lines.insert(lines.end(), front_drops.begin(), front_drops.end());
+    for (const SpiralFlight& f : findSpirals(lines, back_drops, sp))
+        if (levelsOnTreadNosings(f, tread_nosings) >= kTreadSpiralTreadLevels)
+            few_level.push_back(spiralStaircase(cloud, f, floor_z, p));
+}
+
 /// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
 /// steps (in its column's radius and height range) unless one of them has more steps. With
 /// `few_level` given, the spirals of p.few_level_spiral_levels seen levels go there, to be placed
-/// once every pass has run (placeFewLevelSpirals).
+/// once every pass has run (placeFewLevelSpirals), and so do those read from the treads about an
+/// axis glimpsed (addTreadSpirals).
 void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& front_drops,
                       const std::vector<LineSegment>& back_drops, double floor_z,
                       const DetectorParams& p, std::vector<Staircase>& out,
@@ -632,10 +697,15 @@ void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& f
     SpiralSearchParams sp = spiralParams(floor_z, p);
     sp.few_seen_levels = p.few_level_spiral_levels;
     std::vector<SpiralFlight> few;
-    for (const SpiralFlight& f :
-         findSpirals(front_drops, back_drops, sp, few_level ? &few : nullptr))
+    SpiralGlimpse glimpse;
+    const bool treads = few_level && p.tread_spiral_cell_m > 0;
+    for (const SpiralFlight& f : findSpirals(
+             front_drops, back_drops, sp, few_level ? &few : nullptr, treads ? &glimpse : nullptr))
         placeSpiral(f, spiralStaircase(cloud, f, floor_z, p), p.max_step_height_m, out);
+    if (!few_level) return;
     for (const SpiralFlight& f : few) few_level->push_back(spiralStaircase(cloud, f, floor_z, p));
+    if (treads && glimpse.seen_levels >= kTreadGlimpseLevels)
+        addTreadSpirals(cloud, glimpse.axis, front_drops, back_drops, floor_z, p, *few_level);
 }
 
 /// The spirals of few seen levels (DetectorParams::few_level_spiral_levels) that no flight found

@@ -122,6 +122,12 @@ INSTANTIATE_TEST_SUITE_P(
                  [](DetectorParams& p) { p.few_level_spiral_levels = 5; }},
         BadValue{"few_level_spiral_levels",
                  [](DetectorParams& p) { p.few_level_spiral_levels = 1; }},
+        BadValue{"tread_spiral_cell_m", [](DetectorParams& p) { p.tread_spiral_cell_m = 0.01; }},
+        BadValue{"tread_spiral_cell_m", [](DetectorParams& p) { p.tread_spiral_cell_m = 0.5; }},
+        BadValue{"tread_spiral_cell_m", [](DetectorParams& p) { p.tread_spiral_cell_m = -0.05; }},
+        BadValue{"tread_spiral_window_m", [](DetectorParams& p) { p.tread_spiral_window_m = 0.1; }},
+        BadValue{"tread_spiral_window_m",  // the surface's memory
+                 [](DetectorParams& p) { p.tread_spiral_window_m = 50; }},
         // Top-view grid over the memory budget (the far-extent case of issue 8).
         BadValue{"max_range_m", [](DetectorParams& p) { p.max_range_m = 200; }},
         BadValue{"max_range_m",

@@ -311,6 +311,7 @@ TEST(SparseLinePass, IsWhatFindsFlightsOfFourPointLines) {
         DetectorParams off;
         off.sparse_line_points = 0;
         off.few_level_spiral_levels = 0;  // finds the two spirals' four seen levels as well
+        off.tread_spiral_cell_m = 0;      // and reads them from their treads
         EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
     }
 }
@@ -330,8 +331,43 @@ TEST(FewLevelSpirals, AreWhatFindsSpiralsOfFourSeenLevels) {
         ASSERT_FALSE(scene.truth.staircases.empty());
         DetectorParams off;
         off.few_level_spiral_levels = 0;
+        off.tread_spiral_cell_m = 0;  // reads them from their treads as well
         EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
     }
+}
+
+// Spirals whose wedge treads show well but whose nosings the row lines miss where they run along
+// the line of sight: depth cameras pitched down 37 and 33 deg 1.5 m and 0.6 m from a spiral's
+// foot (dev6 r0718, r0832: lines on 1-2 of the 4 seen levels) and an elevation map cropped 2.8 m
+// away (dev5 r0101). Read from the treads (TreadBoundaries) about the axis the spiral search
+// glimpsed through three levels.
+INSTANTIATE_TEST_SUITE_P(
+    TreadSpirals, MissedBefore,
+    testing::Values(SceneCase{28028, 718, 0.01, 0.03, true, "depth camera at 1.5 m"},
+                    SceneCase{28028, 832, 0.01, 0.03, true, "depth camera at 0.6 m"},
+                    SceneCase{26026, 101, 0.01, 0.03, true, "elevation map at 2.8 m"}));
+
+TEST(TreadSpirals, AreWhatFindsSpiralsWhoseNosingsShowBetweenTheirTreads) {
+    for (const auto& [seed, index] : {std::pair{28028, 718}, {28028, 832}, {26026, 101}}) {
+        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
+        ASSERT_FALSE(scene.truth.staircases.empty());
+        DetectorParams off;
+        off.tread_spiral_cell_m = 0;
+        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
+    }
+}
+
+// A level VLP-16 1.4 m from a spiral (check9 r0147): its ring heights on the risers and one true
+// tread nosing made a helix of twice the rise (0.271 m for 0.149 m). A tread spiral must hold two
+// levels of tread nosings (StairDetector.cpp, kTreadSpiralTreadLevels).
+TEST(TreadSpirals, NoHelixOfTwiceTheRiseThroughOneTreadNosing) {
+    const sim::RandomCloud scene = test::benchmarkScene(12012, 147);
+    ASSERT_EQ(scene.truth.staircases.size(), 1u);
+    const StaircaseTruth& truth = scene.truth.staircases[0];
+    const DetectionResult result =
+        StairDetector().detect(scene.cloud, scene.truth.observer_floor_z);
+    for (const Staircase& s : result.staircases)
+        if (test::reportsFlight(s, truth)) EXPECT_NEAR(s.step_height, truth.rise_m, 0.03);
 }
 
 /// A negative scene of the benchmark: the detector reports nothing in it.

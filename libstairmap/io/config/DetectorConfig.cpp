@@ -95,6 +95,8 @@ void readSegmentation(const SectionReader& r, DetectorParams& p) {
     r.number("dashed_nosing_gap_m", p.dashed_nosing_gap_m);
     r.integer("sparse_line_points", p.sparse_line_points);
     r.integer("few_level_spiral_levels", p.few_level_spiral_levels);
+    r.number("tread_spiral_cell_m", p.tread_spiral_cell_m);
+    r.number("tread_spiral_window_m", p.tread_spiral_window_m);
     r.number("point_sigma_m", p.point_sigma_m);
     r.number("merge_chi2", p.merge_chi2);
     r.number("vertical_merge_dz_m", p.vertical_merge_dz_m);

@@ -91,6 +91,8 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_DOUBLE_EQ(c.params.dashed_nosing_gap_m, d.dashed_nosing_gap_m);
     EXPECT_EQ(c.params.sparse_line_points, d.sparse_line_points);
     EXPECT_EQ(c.params.few_level_spiral_levels, d.few_level_spiral_levels);
+    EXPECT_DOUBLE_EQ(c.params.tread_spiral_cell_m, d.tread_spiral_cell_m);
+    EXPECT_DOUBLE_EQ(c.params.tread_spiral_window_m, d.tread_spiral_window_m);
     ASSERT_TRUE(c.robot_height_m.has_value());
     EXPECT_GT(*c.robot_height_m, 0.0);
 }
