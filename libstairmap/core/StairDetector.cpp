@@ -630,8 +630,8 @@ constexpr double kTreadRiseNoise = 0.03;
 /// apart turning about one axis (the row lines alone need five, SpiralSearchParams)
 constexpr int kTreadSpiralSeenLevels = 4;
 /// [-] the treads are looked at only about an axis the first search glimpsed through this many
-/// seen levels: with 3, 18 % of the development clouds are looked at (2: 44 %), and as many dev
-/// spirals are found (10) as when every cloud's surface about the robot was
+/// seen levels: 3 glimpses in 16 % of the development clouds (2: 44 %), and as many dev spirals
+/// are found as when every cloud's surface about the robot was looked at
 constexpr int kTreadGlimpseLevels = 3;
 /// [m] the surface's cells start this far below the floor (its band, TreadBoundaryParams)
 constexpr double kTreadBelowFloor = 0.05;
