@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <utility>
@@ -679,8 +680,15 @@ void addTreadSpirals(const PointCloud& cloud, const Eigen::Vector2d& axis,
     const std::vector<LineSegment> tread_nosings = lines;
     sp.pair_lines = static_cast<int>(lines.size());
     sp.rim_search = false;  // the first search looked for rims
-    lines.insert(lines.end(), front_drops.begin(), front_drops.end());
-    for (const SpiralFlight& f : findSpirals(lines, back_drops, sp))
+    // The first pass's lines with an end within the window: no other can be a wedge nosing about
+    // an axis there (the search's pairs grow with the square of the lines, its inliers with them).
+    const auto nearAxis = [&](const LineSegment& l) {
+        return std::min((l.start - axis).norm(), (l.end - axis).norm()) <= p.tread_spiral_window_m;
+    };
+    std::copy_if(front_drops.begin(), front_drops.end(), std::back_inserter(lines), nearAxis);
+    std::vector<LineSegment> backs;
+    std::copy_if(back_drops.begin(), back_drops.end(), std::back_inserter(backs), nearAxis);
+    for (const SpiralFlight& f : findSpirals(lines, backs, sp))
         if (levelsOnTreadNosings(f, tread_nosings) >= kTreadSpiralTreadLevels)
             few_level.push_back(spiralStaircase(cloud, f, floor_z, p));
 }
