@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <map>
 #include <utility>
@@ -17,7 +16,6 @@
 #include "core/FloorEstimation.h"
 #include "core/FloorNoise.h"
 #include "core/FloorNosing.h"
-#include "core/HeightGrid.h"
 #include "core/LineFusion.h"
 #include "core/LongTreads.h"
 #include "core/MissingNosings.h"
@@ -37,8 +35,8 @@
 #include "core/StepExtent.h"
 #include "core/TallRisers.h"
 #include "core/TopView.h"
-#include "core/TreadBoundaries.h"
 #include "core/TreadHeights.h"
+#include "core/TreadSpirals.h"
 #include "core/TurningFlight.h"
 
 namespace stairmap {
@@ -624,80 +622,16 @@ SpiralSearchParams spiralParams(double floor_z, const DetectorParams& p) {
     return sp;
 }
 
-/// [m] a nosing's two tread patches may differ by this much more or less than a rise: a patch's
-/// height is the mean of its cells' highest points, which a depth camera's noise lifts
-constexpr double kTreadRiseNoise = 0.03;
-/// [-] seen levels enough for a spiral with tread nosings among its lines: four flat wedges a rise
-/// apart turning about one axis (the row lines alone need five, SpiralSearchParams)
-constexpr int kTreadSpiralSeenLevels = 4;
 /// [-] the treads are looked at only about an axis the first search glimpsed through this many
 /// seen levels: 3 glimpses in 16 % of the development clouds (2: 44 %), and as many dev spirals
 /// are found as when every cloud's surface about the robot was looked at
 constexpr int kTreadGlimpseLevels = 3;
-/// [m] the surface's cells start this far below the floor (its band, TreadBoundaryParams)
-constexpr double kTreadBelowFloor = 0.05;
-/// [-] seen levels of a spiral that must be tread nosings: with one, the others are the row lines
-/// the first search already found no spiral in, and a level LiDAR's ring heights on the risers
-/// made a helix of twice the rise through one true tread nosing (check9 r0147, 12 cm off; seen
-/// after scoring the untuned sets, which then lost two more readings 11 cm and 87 cm off; dev
-/// lost one spiral read well, dev4 r0111)
-constexpr int kTreadSpiralTreadLevels = 2;
-
-/// Seen levels of spiral `f` at a tread nosing's height (1 cm) whose line passes by its axis
-/// (SpiralSearchParams::extra_max_axis_offset_m).
-int levelsOnTreadNosings(const SpiralFlight& f, const std::vector<LineSegment>& tread_nosings) {
-    const double max_offset = SpiralSearchParams().extra_max_axis_offset_m;
-    int levels = 0;
-    for (const LineSegment& e : f.edges) {
-        if (e.num_points == 0) continue;  // put back
-        levels +=
-            std::any_of(tread_nosings.begin(), tread_nosings.end(), [&](const LineSegment& l) {
-                return std::abs(l.z - e.z) < 0.01 && std::abs(l.distanceTo(f.axis)) < max_offset;
-            });
-    }
-    return levels;
-}
-
-/// Spirals whose nosings show as boundaries between flat treads of a coarse top surface about
-/// `axis` (TreadBoundaries, DetectorParams::tread_spiral_cell_m): the spiral search once more, on
-/// those lines and the first pass's, through pairs that hold a tread nosing. They go to
-/// `few_level`, to be placed where no flight lies once every pass has run.
-void addTreadSpirals(const PointCloud& cloud, const Eigen::Vector2d& axis,
-                     const std::vector<LineSegment>& front_drops,
-                     const std::vector<LineSegment>& back_drops, double floor_z,
-                     const DetectorParams& p, std::vector<Staircase>& few_level) {
-    thread_local HeightGrid surface;  // scratch re-used between calls
-    surface.fill(cloud, axis, p.tread_spiral_window_m, p.tread_spiral_cell_m,
-                 floor_z - kTreadBelowFloor, floor_z + p.max_height_above_floor_m);
-    TreadBoundaryParams tb;
-    tb.floor_z = floor_z;
-    tb.min_rise_m = p.min_step_height_m - kTreadRiseNoise;
-    tb.max_rise_m = p.max_step_height_m + kTreadRiseNoise;
-    std::vector<LineSegment> lines = treadBoundaryNosings(surface, tb);
-    if (lines.empty()) return;
-    SpiralSearchParams sp = spiralParams(floor_z, p);
-    sp.min_seen_levels = kTreadSpiralSeenLevels;
-    const std::vector<LineSegment> tread_nosings = lines;
-    sp.pair_lines = static_cast<int>(lines.size());
-    sp.rim_search = false;  // the first search looked for rims
-    // The first pass's lines with an end within the window: no other can be a wedge nosing about
-    // an axis there (the search's pairs grow with the square of the lines, its inliers with them).
-    const auto nearAxis = [&](const LineSegment& l) {
-        return std::min((l.start - axis).norm(), (l.end - axis).norm()) <= p.tread_spiral_window_m;
-    };
-    std::copy_if(front_drops.begin(), front_drops.end(), std::back_inserter(lines), nearAxis);
-    std::vector<LineSegment> backs;
-    std::copy_if(back_drops.begin(), back_drops.end(), std::back_inserter(backs), nearAxis);
-    for (const SpiralFlight& f : findSpirals(lines, backs, sp))
-        if (levelsOnTreadNosings(f, tread_nosings) >= kTreadSpiralTreadLevels)
-            few_level.push_back(spiralStaircase(cloud, f, floor_z, p));
-}
 
 /// Spirals found by their axis (SpiralSearch). A spiral replaces the chains of Algorithm 1 on its
 /// steps (in its column's radius and height range) unless one of them has more steps. With
 /// `few_level` given, the spirals of p.few_level_spiral_levels seen levels go there, to be placed
 /// once every pass has run (placeFewLevelSpirals), and so do those read from the treads about an
-/// axis glimpsed (addTreadSpirals).
+/// axis glimpsed (TreadSpirals).
 void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& front_drops,
                       const std::vector<LineSegment>& back_drops, double floor_z,
                       const DetectorParams& p, std::vector<Staircase>& out,
@@ -716,7 +650,10 @@ void addSpiralFlights(const PointCloud& cloud, const std::vector<LineSegment>& f
     // clouds look at their treads without this, 43 with it, finding the same spirals).
     if (treads && glimpse.seen_levels >= kTreadGlimpseLevels &&
         !onAnyFlightFootprint(glimpse.axis, out))
-        addTreadSpirals(cloud, glimpse.axis, front_drops, back_drops, floor_z, p, *few_level);
+        for (const SpiralFlight& f : findTreadSpirals(
+                 cloud, glimpse.axis, front_drops, back_drops, sp,
+                 {p.tread_spiral_cell_m, p.tread_spiral_window_m, p.max_height_above_floor_m}))
+            few_level->push_back(spiralStaircase(cloud, f, floor_z, p));
 }
 
 /// The spirals of few seen levels (DetectorParams::few_level_spiral_levels) that no flight found
