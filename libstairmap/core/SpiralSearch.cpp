@@ -534,7 +534,8 @@ SpiralFlight spiralOfPair(const SpiralLines& sl, int i, int j, const std::vector
              in.end());
     in = withExtraLevels(sl, h, std::move(in), used, p);
     SpiralFlight f = buildFlight(sl, h, in, p);
-    if (f.edges.empty() && glimpse) {
+    // (levels are at most the lines: most failing pairs skip the count)
+    if (f.edges.empty() && glimpse && static_cast<int>(in.size()) > glimpse->seen_levels) {
         const int seen = static_cast<int>(levelsOf(in, p.height_tolerance_m).size());
         if (seen > glimpse->seen_levels) *glimpse = {h.axis, seen};
     }

@@ -97,8 +97,8 @@ PrincipalLine principalLine(const std::vector<Eigen::Vector2d>& pts) {
 }
 
 /// The line through `pts`, if straight and long enough.
-bool fitLine(const std::vector<Eigen::Vector2d>& pts, double z, const TreadBoundaryParams& p,
-             LineSegment& out) {
+bool boundaryLine(const std::vector<Eigen::Vector2d>& pts, double z, const TreadBoundaryParams& p,
+                  LineSegment& out) {
     const int count = static_cast<int>(pts.size());
     if (count < p.min_line_cells) return false;
     const PrincipalLine line = principalLine(pts);
@@ -170,7 +170,7 @@ void fitBoundaries(std::vector<Eigen::Vector2d> left, double z, const TreadBound
             splitByLine(left, line.mean, {line.dir.y(), -line.dir.x()}, p.max_line_rms_m, in, out);
         }
         LineSegment l;
-        if (fitLine(in, z, p, l)) lines.push_back(l);
+        if (boundaryLine(in, z, p, l)) lines.push_back(l);
         if (out.size() == left.size()) return;  // the refits took nothing: nothing more to find
         left.swap(out);
     }

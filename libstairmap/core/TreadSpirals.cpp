@@ -28,15 +28,15 @@ constexpr int kTreadLevels = 2;
 /// [m] a seen level lies on a tread nosing this close to its height
 constexpr double kSameHeight = 0.01;
 
-/// Seen levels of spiral `f` at a tread nosing's height whose line passes by its axis
-/// (SpiralSearchParams::extra_max_axis_offset_m).
-int levelsOnTreadNosings(const SpiralFlight& f, const std::vector<LineSegment>& tread_nosings,
-                         const SpiralSearchParams& search) {
+/// Seen levels of spiral `f` at the height of one of the first `tread_count` lines (the tread
+/// nosings) whose line passes by its axis (SpiralSearchParams::extra_max_axis_offset_m).
+int levelsOnTreadNosings(const SpiralFlight& f, const std::vector<LineSegment>& lines,
+                         int tread_count, const SpiralSearchParams& search) {
     int levels = 0;
     for (const LineSegment& e : f.edges) {
         if (e.num_points == 0) continue;  // put back
         levels +=
-            std::any_of(tread_nosings.begin(), tread_nosings.end(), [&](const LineSegment& l) {
+            std::any_of(lines.begin(), lines.begin() + tread_count, [&](const LineSegment& l) {
                 return std::abs(l.z - e.z) < kSameHeight &&
                        std::abs(l.distanceTo(f.axis)) < search.extra_max_axis_offset_m;
             });
@@ -60,11 +60,9 @@ std::vector<SpiralFlight> findTreadSpirals(const PointCloud& cloud, const Eigen:
     tb.max_rise_m = search.max_rise_m + kTreadRiseNoise;
     std::vector<LineSegment> lines = treadBoundaryNosings(surface, tb);
     if (lines.empty()) return {};
-    const std::vector<LineSegment> tread_nosings = lines;
     SpiralSearchParams sp = search;
     sp.min_seen_levels = kSeenLevels;
-    sp.few_seen_levels = 0;
-    sp.pair_lines = static_cast<int>(lines.size());
+    sp.pair_lines = static_cast<int>(lines.size());  // the tread nosings, first in `lines`
     sp.rim_search = false;  // the first search looked for rims
     // The row lines with an end within the window: no other can be a wedge nosing about an axis
     // there (the search's pairs grow with the square of the lines, its inliers with them).
@@ -76,7 +74,7 @@ std::vector<SpiralFlight> findTreadSpirals(const PointCloud& cloud, const Eigen:
     std::copy_if(back_drops.begin(), back_drops.end(), std::back_inserter(backs), nearAxis);
     std::vector<SpiralFlight> found;
     for (SpiralFlight& f : findSpirals(lines, backs, sp))
-        if (levelsOnTreadNosings(f, tread_nosings, sp) >= kTreadLevels)
+        if (levelsOnTreadNosings(f, lines, sp.pair_lines, sp) >= kTreadLevels)
             found.push_back(std::move(f));
     return found;
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <ostream>
 #include <utility>
 
@@ -237,6 +238,17 @@ int flightsOnTruth(const sim::RandomCloud& scene, const DetectorParams& params) 
     return n;
 }
 
+/// No flight is found on the truth of any benchmark scene (seed, index) of `scenes` with `off`
+/// (the detector with the pass under test turned off): that pass is what finds them.
+void expectNoneFoundWith(std::initializer_list<std::pair<int, int>> scenes,
+                         const DetectorParams& off) {
+    for (const auto& [seed, index] : scenes) {
+        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
+        ASSERT_FALSE(scene.truth.staircases.empty());
+        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
+    }
+}
+
 TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
     const sim::RandomCloud scene = test::benchmarkScene(1001, 175);
     ASSERT_EQ(scene.truth.staircases.size(), 1u);
@@ -285,13 +297,9 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{28028, 333, 0.01, 0.03, true, "pitched OS1-64, dev6"}));
 
 TEST(DashedNosingPass, IsWhatFindsFlightsSeenInDashes) {
-    for (const auto& [seed, index] : {std::pair{1001, 126}, {4004, 78}, {3003, 106}, {4004, 166}}) {
-        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
-        ASSERT_FALSE(scene.truth.staircases.empty());
-        DetectorParams off;
-        off.dashed_nosing_gap_m = 0.0;
-        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
-    }
+    DetectorParams off;
+    off.dashed_nosing_gap_m = 0.0;
+    expectNoneFoundWith({{1001, 126}, {4004, 78}, {3003, 106}, {4004, 166}}, off);
 }
 
 // Nosings left with lines of four top-view columns, one short of min_line_points: an open-riser
@@ -305,15 +313,11 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{4004, 90, 0.01, 0.02, false, "pitched VLP-16 at 0.7 m, spiral"}));
 
 TEST(SparseLinePass, IsWhatFindsFlightsOfFourPointLines) {
-    for (const auto& [seed, index] : {std::pair{1001, 114}, {3003, 147}, {4004, 90}}) {
-        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
-        ASSERT_FALSE(scene.truth.staircases.empty());
-        DetectorParams off;
-        off.sparse_line_points = 0;
-        off.few_level_spiral_levels = 0;  // finds the two spirals' four seen levels as well
-        off.tread_spiral_cell_m = 0;      // and reads them from their treads
-        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
-    }
+    DetectorParams off;
+    off.sparse_line_points = 0;
+    off.few_level_spiral_levels = 0;  // finds the two spirals' four seen levels as well
+    off.tread_spiral_cell_m = 0;      // and reads them from their treads
+    expectNoneFoundWith({{1001, 114}, {3003, 147}, {4004, 90}}, off);
 }
 
 // Spirals seen over four levels with lines, one short of the spiral search's five, every level
@@ -326,14 +330,10 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{13013, 97, 0.01, 0.02, true, "pitched OS1-64 at 4.7 m, 4 steps"}));
 
 TEST(FewLevelSpirals, AreWhatFindsSpiralsOfFourSeenLevels) {
-    for (const auto& [seed, index] : {std::pair{4004, 3}, {13013, 97}}) {
-        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
-        ASSERT_FALSE(scene.truth.staircases.empty());
-        DetectorParams off;
-        off.few_level_spiral_levels = 0;
-        off.tread_spiral_cell_m = 0;  // reads them from their treads as well
-        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
-    }
+    DetectorParams off;
+    off.few_level_spiral_levels = 0;
+    off.tread_spiral_cell_m = 0;  // reads them from their treads as well
+    expectNoneFoundWith({{4004, 3}, {13013, 97}}, off);
 }
 
 // Spirals whose wedge treads show well but whose nosings the row lines miss where they run along
@@ -348,13 +348,9 @@ INSTANTIATE_TEST_SUITE_P(
                     SceneCase{26026, 101, 0.01, 0.03, true, "elevation map at 2.8 m"}));
 
 TEST(TreadSpirals, AreWhatFindsSpiralsWhoseNosingsShowBetweenTheirTreads) {
-    for (const auto& [seed, index] : {std::pair{28028, 718}, {28028, 832}, {26026, 101}}) {
-        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
-        ASSERT_FALSE(scene.truth.staircases.empty());
-        DetectorParams off;
-        off.tread_spiral_cell_m = 0;
-        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
-    }
+    DetectorParams off;
+    off.tread_spiral_cell_m = 0;
+    expectNoneFoundWith({{28028, 718}, {28028, 832}, {26026, 101}}, off);
 }
 
 // A level VLP-16 1.4 m from a spiral (check9 r0147): its ring heights on the risers and one true
@@ -366,8 +362,11 @@ TEST(TreadSpirals, NoHelixOfTwiceTheRiseThroughOneTreadNosing) {
     const StaircaseTruth& truth = scene.truth.staircases[0];
     const DetectionResult result =
         StairDetector().detect(scene.cloud, scene.truth.observer_floor_z);
-    for (const Staircase& s : result.staircases)
-        if (test::reportsFlight(s, truth)) EXPECT_NEAR(s.step_height, truth.rise_m, 0.03);
+    for (const Staircase& s : result.staircases) {
+        if (test::reportsFlight(s, truth)) {
+            EXPECT_NEAR(s.step_height, truth.rise_m, 0.03);
+        }
+    }
 }
 
 /// A negative scene of the benchmark: the detector reports nothing in it.
