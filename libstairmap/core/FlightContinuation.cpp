@@ -207,6 +207,19 @@ bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>
     return showsTread(w, half, p);
 }
 
+bool floorNosingAbovePit(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                         double floor_z, const FlightContinuationParams& p) {
+    if (!isRegularStraightChain(edges, p)) return false;
+    const ChainStep step = chainStep(edges);
+    const LineSegment& first = edges.front();
+    if (std::abs(first.z - floor_z - step.rise) > p.tread_dz_m) return false;
+    const double half = 0.5 * first.length() * (1.0 - 2.0 * p.end_fraction);
+    const TreadWindow w =
+        countTread(cloud, first.centre(), first.direction(), step.up, half, -p.to_runs * step.run,
+                   -p.from_runs * step.run, floor_z - step.rise, floor_z, p);
+    return showsTread(w, half, p);
+}
+
 namespace {
 
 /// No point at or above `min_z` in the window one step beyond the last edge of a regular chain.

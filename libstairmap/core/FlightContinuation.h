@@ -116,6 +116,15 @@ bool riserAboveLastEdge(const PointCloud& cloud, const std::vector<LineSegment>&
 bool treadBelowFirstEdge(const PointCloud& cloud, const std::vector<LineSegment>& edges,
                          double floor_z, const FlightContinuationParams& params = {});
 
+/// Whether `edges` (as above) are a regular straight flight rising from below the floor at
+/// floor_z: its first edge one rise above the floor (within tread_dz_m), so that the nosing one
+/// run in front of it lies at the floor's height (never a line: ground rows are not searched),
+/// and the cloud shows the tread one rise below the floor in front of that nosing (the window of
+/// treadBelowFirstEdge one run further out: a sunken area's floor or the step below), more
+/// points there than at the floor's height. A flight from the floor has the floor there.
+bool floorNosingAbovePit(const PointCloud& cloud, const std::vector<LineSegment>& edges,
+                         double floor_z, const FlightContinuationParams& params = {});
+
 /// Whether `edges` (as above) are a regular straight flight that starts from a landing or platform
 /// above the robot's floor: the surface one rise below the first edge, seen in front of it (the
 /// window of treadBelowFirstEdge), lies at least min_landing_height_m above floor_z. A two-step

@@ -353,8 +353,11 @@ void detectDirection(const PointCloud& cloud, const Candidates& cand,
     // search may stop one edge short of min_steps, and the flight counts once that edge is added.
     DetectorParams search = p;
     if (!up) search.min_steps = std::max(2, p.min_steps - 1);
-    const bool deep_treads = up && p.max_level_tread_depth_m > p.max_step_depth_m;
-    const bool pairs_apart = up && p.max_double_step_rise_m > 0;
+    // The last pass (ascend_from_below_floor) asks only its own cues: the passes before it asked
+    // the others of the same lines.
+    const bool earlier_cues = !p.ascend_from_below_floor;
+    const bool deep_treads = up && earlier_cues && p.max_level_tread_depth_m > p.max_step_depth_m;
+    const bool pairs_apart = up && earlier_cues && p.max_double_step_rise_m > 0;
     std::vector<int> refused;
     std::vector<std::vector<int>> refused_ties;
     std::vector<char> used;
@@ -452,21 +455,36 @@ void detectDirection(const PointCloud& cloud, const Candidates& cand,
     };
     if (up) {
         const std::vector<int>* taken =
-            continueRefused(lines, refused, refused_ties, continued, anyChain);
+            earlier_cues ? continueRefused(lines, refused, refused_ties, continued, anyChain)
+                         : nullptr;
         // Its corrections are a pass over the cloud each: only for chains with a line already
         // two steps beyond their uncorrected last edge.
         const auto lineBeyond = [&](const std::vector<LineSegment>& edges) {
             return !linesEveryOtherStepBeyond(lines, edges, continuationParams(p)).empty();
         };
-        if (!taken && p.continue_every_other_step)
+        if (!taken && earlier_cues && p.continue_every_other_step)
             taken =
                 continueRefused(lines, refused, refused_ties, continuedEveryOtherStep, lineBeyond);
-        if (!taken && p.continue_by_next_riser) {
+        if (!taken && earlier_cues && p.continue_by_next_riser) {
             beyond.clear();
             const auto byRiser = [&](std::vector<LineSegment>& edges) {
                 return continuedByNextRiser(cloud, p, edges);
             };
             taken = continueRefused(lines, refused, refused_ties, byRiser, anyChain);
+        }
+        // Last (the passes before this one found their flights): a chain one rise up from the
+        // floor, rising from the tread a rise below it, gets its nosing at the floor's height.
+        if (!taken && p.ascend_from_below_floor) {
+            beyond.clear();
+            const auto abovePit = [&](std::vector<LineSegment>& edges) {
+                const FlightContinuationParams cp = continuationParams(p);
+                if (!floorNosingAbovePit(cloud, edges, floor_z, cp) ||
+                    treadsRiseAlongTheRun(cloud, edges, cp))
+                    return false;
+                edges.insert(edges.begin(), previousNosing(edges));
+                return true;
+            };
+            taken = continueRefused(lines, refused, refused_ties, abovePit, anyChain);
         }
         if (taken) {
             if (!used.empty()) {  // kept only for the searches below and the debug record
@@ -895,6 +913,54 @@ void addSparseLineFlights(const PointCloud& cloud, const Candidates& cand, doubl
     addLooseFlights(cloud, cand, floor_z, sparse, user, /*straight_only=*/false, found);
 }
 
+/// The last pass (DetectorParams::ascend_from_below_floor): Algorithm 1 again, ascending only and
+/// without the spiral search, with the rows and lines of each pass before it (the first pass's,
+/// the dashed-nosing pass's at both row heights, the sparse-line and tilted-ring passes'), on the
+/// lines off the flights found; a chain may count the nosing at the floor's height it steps over,
+/// start from the lines below the floor where the chains from it fall short, or be continued
+/// down to that nosing above a pit. Kept: flights of min_steps edges or more that start below the
+/// floor (what the pass is for: the others were searched already), are regular straight flights
+/// (a depth camera's noisy lines chained across the floor read rises 4-10 cm off) and keep off the
+/// flights found. Last, so that the other passes' readings of a flight are kept: run within them,
+/// its chains of riser hits preempted whole flights (dev6 r1107, a 5-step flight read as 4).
+/// Skipped when no point lies below the floor (half a minimum rise): a level room pays one scan.
+void addFlightsFromBelowFloor(const PointCloud& cloud, const Candidates& cand, double floor_z,
+                              const DetectorParams& p, const DetectorParams& user,
+                              std::vector<Staircase>& found) {
+    const double below_floor = floor_z - 0.5 * user.min_step_height_m;
+    // Nothing seen below the floor (a room's level floor): no flight rises from there.
+    if (std::none_of(cloud.begin(), cloud.end(),
+                     [&](const Eigen::Vector3f& q) { return q.z() < below_floor; }))
+        return;
+    DetectorParams below = p;
+    below.ascend_from_below_floor = true;
+    below.detect_descending = false;
+    std::vector<DetectorParams> passes = {below};
+    if (user.dashed_nosing_gap_m > 0)
+        for (const double rows : {user.row_height_m, user.tilted_ring_row_height_m}) {
+            if (rows <= 0) continue;
+            passes.push_back(below);
+            passes.back().max_point_gap_m = user.dashed_nosing_gap_m;
+            passes.back().row_height_m = rows;
+        }
+    if (user.sparse_line_points > 0) {
+        passes.push_back(below);
+        passes.back().min_line_points = user.sparse_line_points;
+    }
+    if (user.tilted_ring_row_height_m > 0) {
+        passes.push_back(below);
+        passes.back().row_height_m = user.tilted_ring_row_height_m;
+    }
+    DetectorParams no_spirals = user;
+    no_spirals.detect_ascending = false;
+    for (const DetectorParams& pass : passes)
+        for (Staircase& s : findFlights(cloud, cand, floor_z, pass, no_spirals, found, nullptr))
+            if (static_cast<int>(s.steps.size()) >= user.min_steps &&
+                flightStartZ(s) < below_floor && isRegularFlight(s, floor_z) &&
+                !overlapsAnyFlight(s, found))
+                found.push_back(std::move(s));
+}
+
 /// [m] the column is looked for this far beyond the nosings' inner ends, and this far above the
 /// highest nosing (the column's top above the last tread) and kColumnBelow below the lowest
 constexpr double kColumnReach = 0.10, kColumnAbove = 0.30, kColumnBelow = 0.05;
@@ -936,7 +1002,9 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     tl_lines.clear();
     const Candidates cand{cells, tl_arrays, tl_lines};
 
-    const DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
+    // The passes' parameters; the last pass alone looks below the floor (see its comment).
+    DetectorParams p = withNoisySplitDistance(params_, cloud_robot, floor, debug);
+    p.ascend_from_below_floor = false;
     std::vector<Staircase> few_level_spirals;
     result.staircases =
         findFlights(cloud_robot, cand, floor, p, params_, {}, debug, &few_level_spirals);
@@ -948,6 +1016,8 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     // flight 0.190 m where it reads 0.200 m on 0.204 m). Run before them, it took their lines.
     if (params_.tilted_ring_row_height_m > 0)
         addTiltedRingFlights(cloud_robot, cand, floor, p, params_, result.staircases);
+    if (params_.ascend_from_below_floor)
+        addFlightsFromBelowFloor(cloud_robot, cand, floor, p, params_, result.staircases);
     placeFewLevelSpirals(few_level_spirals, result.staircases);
     joinSpiralPieces(result.staircases);
     dropSpiralRepeats(result.staircases);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/LineFusion.h"
 
@@ -57,6 +58,8 @@ struct Candidate {
     /// [m] run per step of every pair taken so far that is not turned (see kTurningDeg),
     /// the initial pair first
     std::vector<double> runs;
+    /// [m] heights of the nosings stepped over (pairs two nosings apart), halfway between the pair
+    std::vector<double> stepped_over_z;
 };
 
 /// Is the pair turned from the chain's first pair, as on a turning (spiral) flight?
@@ -143,6 +146,7 @@ void extend(const std::vector<LineSegment>& lines, const std::vector<char>& used
         int best = nextEdge(lines, used, p, c, 1);
         if (best < 0) best = nextEdge(lines, used, p, c, steps = 2);
         if (best < 0) return;
+        if (steps == 2) c.stepped_over_z.push_back(0.5 * (lines[last].z + lines[best].z));
         // Follow a turning (spiral) flight: compare the next pair with the latest direction.
         const StairPair pair = *checkStepsApart(lines[last], lines[best], steps, c.rise, p);
         addRun(pair, steps, c);
@@ -193,6 +197,7 @@ void extendDown(const std::vector<LineSegment>& lines, const std::vector<char>& 
         int best = previousEdge(lines, used, p, c, 1);
         if (best < 0) best = previousEdge(lines, used, p, c, steps = 2);
         if (best < 0) return;
+        if (steps == 2) c.stepped_over_z.push_back(0.5 * (lines[first].z + lines[best].z));
         const StairPair pair = *checkStepsApart(lines[best], lines[first], steps, c.first_rise, p);
         addRun(pair, steps, c);
         c.first_normal = pair.normal;
@@ -201,11 +206,13 @@ void extendDown(const std::vector<LineSegment>& lines, const std::vector<char>& 
     }
 }
 
-/// Algorithm 1, initialisation over the lines near the floor: the longest chain from any initial
-/// pair; `ties` (may be null) receives the other chains as long as it, in search order.
+/// Algorithm 1, initialisation over the lines near the floor (first edge from min_first above it):
+/// the longest chain from any initial pair whose last edge lies at min_last_z or higher; `ties`
+/// (may be null) receives the other chains as long as it, in search order.
 Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<char>& used,
                        double floor_z, double min_first, const DetectorParams& p,
-                       std::vector<Candidate>* ties) {
+                       std::vector<Candidate>* ties,
+                       double min_last_z = -std::numeric_limits<double>::infinity()) {
     Candidate best;
     const auto [b, e] =
         zRange(lines, floor_z + min_first, floor_z + p.init_height_factor * p.max_step_height_m);
@@ -216,8 +223,10 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
             if (used[j]) continue;
             const auto pair = checkStairPair(lines[i], lines[j], p);
             if (!pair || hasLineBetween(lines, i, j, *pair, p)) continue;
-            Candidate c{{i, j}, pair->normal, pair->rise, pair->normal, pair->rise, {pair->run}};
+            Candidate c{{i, j},     pair->normal, pair->rise, pair->normal,
+                        pair->rise, {pair->run},  {}};
             extend(lines, used, p, c);
+            if (lines[c.steps.back()].z < min_last_z) continue;
             if (c.steps.size() > best.steps.size()) {
                 best = c;
                 if (ties) ties->clear();
@@ -229,6 +238,16 @@ Candidate bestFromInit(const std::vector<LineSegment>& lines, const std::vector<
         }
     }
     return best;
+}
+
+/// The nosings at the floor's height a chain stepped over: ground rows are not searched, so the
+/// nosing there of a flight rising from below the floor is never a line (kGapRiseTolerance: the
+/// stepped-over nosing lies halfway between its neighbours, each read a few cm off).
+int floorNosingsSteppedOver(const Candidate& c, double floor_z, const DetectorParams& p) {
+    return static_cast<int>(
+        std::count_if(c.stepped_over_z.begin(), c.stepped_over_z.end(), [&](double z) {
+            return std::abs(z - floor_z) <= p.floor_tolerance_m + kGapRiseTolerance;
+        }));
 }
 
 }  // namespace
@@ -303,7 +322,22 @@ std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& l
         Candidate c = bestFromInit(lines, used, floor_z, min_first_height, p,
                                    refused_ties ? &ties : nullptr);
         if (continue_down && c.steps.size() >= 2) extendDown(lines, used, p, c);
-        if (static_cast<int>(c.steps.size()) < p.min_steps) {
+        // Flights rising from below the floor (DetectorParams::ascend_from_below_floor): their
+        // nosing at the floor's height counts; and where the chains from the floor fall short
+        // before any flight is found, a chain from the lines below it that rises above it.
+        const bool from_below = continue_down && p.ascend_from_below_floor;
+        const auto length = [&](const Candidate& k) {
+            return static_cast<int>(k.steps.size()) +
+                   (from_below ? floorNosingsSteppedOver(k, floor_z, p) : 0);
+        };
+        if (from_below && found.empty() && length(c) < p.min_steps) {
+            Candidate below =
+                bestFromInit(lines, used, floor_z, -p.init_height_factor * p.max_step_height_m, p,
+                             nullptr, floor_z + p.floor_tolerance_m);
+            if (below.steps.size() >= 2) extendDown(lines, used, p, below);
+            if (length(below) >= p.min_steps) c = std::move(below);
+        }
+        if (length(c) < p.min_steps) {
             if (refused != nullptr && c.steps.size() >= 2) *refused = c.steps;
             if (refused_ties != nullptr && c.steps.size() >= 2) {
                 for (Candidate& t : ties) {

@@ -39,7 +39,10 @@ bool hasLineBetween(const std::vector<LineSegment>& sorted_lines, int lower, int
 /// `refused` (debug only, may be null): receives the best chain that ended the search for being
 /// shorter than min_steps (when it had two edges or more), and `used` the lines taken by results.
 /// `continue_down`: each chain is also continued below its first edge, down to the flight's foot
-/// (ascending flights rising from a pit or a landing below the robot's floor).
+/// (ascending flights rising from a pit or a landing below the robot's floor); with
+/// params.ascend_from_below_floor a nosing at the floor's height the chain stepped over counts
+/// towards min_steps, and when the chains from the floor fall short before any is found, the
+/// longest chain from lines below the floor that rises above it is taken if it counts.
 /// `refused_ties` (may be null): the other chains as long as the refused one (at most 8, in search
 /// order): when a nosing's line is split at a bend, its longer piece may start the right chain.
 std::vector<std::vector<int>> searchStaircases(const std::vector<LineSegment>& sorted_lines,

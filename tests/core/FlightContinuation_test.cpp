@@ -1,5 +1,6 @@
 // A chain one edge short of a flight: continued only where the cloud shows the tread above its last
-// edge (or below its first), never on a stage's platform. Hand-made edges and clouds.
+// edge (or below its first, or a rise below the floor in front of it), never on a stage's platform.
+// Hand-made edges and clouds.
 #include "core/FlightContinuation.h"
 
 #include <gtest/gtest.h>
@@ -185,6 +186,32 @@ TEST(FlightContinuation, AStageOnTheFloorStartsNoFlightFromALanding) {
     PointCloud cloud = threeTreads();
     addTread(cloud, 0.0, 1.0, 0.0);
     EXPECT_FALSE(startsFromRaisedLanding(cloud, {step(1), step(2), step(3)}, 0.0));
+}
+
+TEST(FlightContinuation, ATreadARiseBelowTheFloorInFrontOfItsNosingAddsThatNosing) {
+    // A flight rising from a sunken area one rise below the floor: its nosing at the floor's
+    // height (x = 1 - run, a ground line, never searched), the floor-high tread behind it, the
+    // sunken area's floor in front of it.
+    PointCloud cloud = threeTreads();
+    addTread(cloud, 1.0 - kRun, 1.0, 0.0);
+    addTread(cloud, 0.0, 1.0 - kRun, -kRise);
+    const std::vector<LineSegment> edges = {step(1), step(2), step(3)};
+    ASSERT_TRUE(floorNosingAbovePit(cloud, edges, 0.0));
+    const LineSegment floor_nosing = previousNosing(edges);
+    EXPECT_NEAR(floor_nosing.z, 0.0, 1e-6);
+    EXPECT_NEAR(floor_nosing.centre().x(), 1.0 - kRun, 1e-6);
+}
+
+TEST(FlightContinuation, TheFloorInFrontOfTheFirstStepIsNoPit) {
+    // A flight from the floor: the floor in front of its first nosing, nothing below it.
+    PointCloud cloud = threeTreads();
+    addTread(cloud, 0.0, 1.0, 0.0);
+    EXPECT_FALSE(floorNosingAbovePit(cloud, {step(1), step(2), step(3)}, 0.0));
+    // ...and a chain two rises up has no nosing at the floor's height one run in front of it.
+    PointCloud sunken = threeTreads();
+    addTread(sunken, 1.0 + 3 * kRun, 1.0 + 4 * kRun, 4 * kRise);
+    addTread(sunken, 0.0, 1.0, -kRise);
+    EXPECT_FALSE(floorNosingAbovePit(sunken, {step(2), step(3), step(4)}, 0.0));
 }
 
 TEST(FlightContinuation, NothingSeenBeyondTheLastEdgeIsAnUnseenTop) {

@@ -67,5 +67,49 @@ TEST(StairSearch, ARefusedChainComesWithTheOtherChainsAsLong) {
     EXPECT_EQ(ties.front(), (std::vector<int>{1, 2, 3}));
 }
 
+// A flight rising from a sunken area below the floor (z = 0), 0.18 m rises, 0.28 m runs: its
+// nosing at the floor's height (x = 1.28) is a ground line, never searched. `lines` holds the
+// searched ones; the chains found with or without DetectorParams::ascend_from_below_floor.
+std::vector<std::vector<int>> searchFromBelow(const std::vector<LineSegment>& lines,
+                                              bool ascend_from_below_floor) {
+    DetectorParams p;
+    p.ascend_from_below_floor = ascend_from_below_floor;
+    return searchStaircases(lines, 0.0, p.floor_tolerance_m, p, nullptr, nullptr,
+                            /*continue_down=*/true);
+}
+
+TEST(StairSearch, ANosingAtTheFloorsHeightSteppedOverCounts) {
+    // The chain from the floor (0.18, 0.36) continues down across the floor's height to -0.18;
+    // with the nosing stepped over there, the flight has its four edges.
+    const std::vector<LineSegment> lines = {nosing(1.0, -0.18), nosing(1.56, 0.18),
+                                            nosing(1.84, 0.36)};
+    const auto chains = searchFromBelow(lines, true);
+    ASSERT_EQ(chains.size(), 1u);
+    EXPECT_EQ(chains.front(), (std::vector<int>{0, 1, 2}));
+    EXPECT_TRUE(searchFromBelow(lines, false).empty());  // three seen edges are a stage's
+}
+
+TEST(StairSearch, AChainFromBelowTheFloorMustRiseAboveIt) {
+    // One line above the floor, two below: nothing starts from the floor, so the search starts
+    // from the lines below it.
+    const std::vector<LineSegment> from_below = {nosing(0.72, -0.36), nosing(1.0, -0.18),
+                                                 nosing(1.56, 0.18)};
+    const auto chains = searchFromBelow(from_below, true);
+    ASSERT_EQ(chains.size(), 1u);
+    EXPECT_EQ(chains.front(), (std::vector<int>{0, 1, 2}));
+    EXPECT_TRUE(searchFromBelow(from_below, false).empty());
+    // Steps that stay below the floor (a pit's, four of them) are no ascending flight.
+    const std::vector<LineSegment> pit = {nosing(0.16, -0.72), nosing(0.44, -0.54),
+                                          nosing(0.72, -0.36), nosing(1.0, -0.18)};
+    EXPECT_TRUE(searchFromBelow(pit, true).empty());
+}
+
+TEST(StairSearch, OnlyANosingAtTheFloorsHeightCountsWhenSteppedOver) {
+    // 0.2 m rises from the floor, the second nosing (0.4 m) not seen: it could have been, so
+    // three seen edges stay one short.
+    const std::vector<LineSegment> lines = {nosing(1.0, 0.2), nosing(1.56, 0.6), nosing(1.84, 0.8)};
+    EXPECT_TRUE(searchFromBelow(lines, true).empty());
+}
+
 }  // namespace
 }  // namespace stairmap

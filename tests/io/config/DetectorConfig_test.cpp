@@ -85,6 +85,7 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_EQ(c.params.min_steps, d.min_steps);
     EXPECT_EQ(c.params.continue_every_other_step, d.continue_every_other_step);
     EXPECT_EQ(c.params.continue_by_next_riser, d.continue_by_next_riser);
+    EXPECT_EQ(c.params.ascend_from_below_floor, d.ascend_from_below_floor);
     EXPECT_EQ(c.params.level_by_line_spacing, d.level_by_line_spacing);
     EXPECT_DOUBLE_EQ(c.params.max_ramp_rms_ratio, d.max_ramp_rms_ratio);
     EXPECT_DOUBLE_EQ(c.params.max_descent_start_off_level, d.max_descent_start_off_level);
