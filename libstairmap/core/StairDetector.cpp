@@ -729,14 +729,20 @@ bool risesEvenly(const Staircase& s, double max_deviation) {
     return true;
 }
 
+/// `p` with the tilted-ring pass's taller rows (DetectorParams::tilted_ring_row_height_m).
+DetectorParams tiltedRingParams(const DetectorParams& p, const DetectorParams& user) {
+    DetectorParams tall = p;
+    tall.row_height_m = user.tilted_ring_row_height_m;
+    return tall;
+}
+
 /// The tilted-ring pass (DetectorParams::tilted_ring_row_height_m): the search again with taller
 /// rows on the lines off the flights found; its flights that keep off those too and rise evenly
 /// (kTiltedPassMaxRiseDeviation) are added.
 void addTiltedRingFlights(const PointCloud& cloud, const Candidates& cand,
                           double floor_z, const DetectorParams& p, const DetectorParams& user,
                           std::vector<Staircase>& found) {
-    DetectorParams tall = p;
-    tall.row_height_m = user.tilted_ring_row_height_m;
+    const DetectorParams tall = tiltedRingParams(p, user);
     // Condition 1 outright (without dropFlightsOutsideTheRises's 2 cm of noise): a ramp beside a
     // pitched LiDAR, its slanted rings cut by the taller rows, reads as 0.099 m rises (check
     // r0165); the pass's flights on the three development sets read 0.11 m or more but one.
@@ -881,6 +887,22 @@ void addLooseFlights(const PointCloud& cloud, const Candidates& cand, double flo
     joinContinuedFlights(found, joinParams(user));
 }
 
+/// `p` with the dashed-nosing pass's rows, cut only at gaps over dashed_nosing_gap_m, `rows` tall.
+DetectorParams dashedNosingParams(const DetectorParams& p, const DetectorParams& user,
+                                  double rows) {
+    DetectorParams dashed = p;
+    dashed.max_point_gap_m = user.dashed_nosing_gap_m;
+    dashed.row_height_m = rows;
+    return dashed;
+}
+
+/// `p` with the sparse-line pass's lines of fewer points (DetectorParams::sparse_line_points).
+DetectorParams sparseLineParams(const DetectorParams& p, const DetectorParams& user) {
+    DetectorParams sparse = p;
+    sparse.min_line_points = user.sparse_line_points;
+    return sparse;
+}
+
 /// The dashed-nosing pass (DetectorParams::dashed_nosing_gap_m): Algorithm 1 with rows cut only
 /// at long gaps, at both row heights, its flights those of a pass of looser lines that are
 /// regular straight flights (chains through a spiral's levels and balusters read rises 10 cm off,
@@ -890,12 +912,10 @@ void addDashedNosingFlights(const PointCloud& cloud, const Candidates& cand, dou
                             const DetectorParams& p, const DetectorParams& user,
                             std::vector<Staircase>& found) {
     if (user.dashed_nosing_gap_m <= 0) return;
-    DetectorParams dashed = p;
-    dashed.max_point_gap_m = user.dashed_nosing_gap_m;
     for (const double rows : {user.row_height_m, user.tilted_ring_row_height_m}) {
         if (rows <= 0) continue;
-        dashed.row_height_m = rows;
-        addLooseFlights(cloud, cand, floor_z, dashed, user, /*straight_only=*/true, found);
+        addLooseFlights(cloud, cand, floor_z, dashedNosingParams(p, user, rows), user,
+                        /*straight_only=*/true, found);
     }
 }
 
@@ -908,9 +928,8 @@ void addSparseLineFlights(const PointCloud& cloud, const Candidates& cand, doubl
                           const DetectorParams& p, const DetectorParams& user,
                           std::vector<Staircase>& found) {
     if (user.sparse_line_points <= 0) return;
-    DetectorParams sparse = p;
-    sparse.min_line_points = user.sparse_line_points;
-    addLooseFlights(cloud, cand, floor_z, sparse, user, /*straight_only=*/false, found);
+    addLooseFlights(cloud, cand, floor_z, sparseLineParams(p, user), user,
+                    /*straight_only=*/false, found);
 }
 
 /// The last pass (DetectorParams::ascend_from_below_floor): Algorithm 1 again, ascending only and
@@ -937,20 +956,10 @@ void addFlightsFromBelowFloor(const PointCloud& cloud, const Candidates& cand, d
     below.detect_descending = false;
     std::vector<DetectorParams> passes = {below};
     if (user.dashed_nosing_gap_m > 0)
-        for (const double rows : {user.row_height_m, user.tilted_ring_row_height_m}) {
-            if (rows <= 0) continue;
-            passes.push_back(below);
-            passes.back().max_point_gap_m = user.dashed_nosing_gap_m;
-            passes.back().row_height_m = rows;
-        }
-    if (user.sparse_line_points > 0) {
-        passes.push_back(below);
-        passes.back().min_line_points = user.sparse_line_points;
-    }
-    if (user.tilted_ring_row_height_m > 0) {
-        passes.push_back(below);
-        passes.back().row_height_m = user.tilted_ring_row_height_m;
-    }
+        for (const double rows : {user.row_height_m, user.tilted_ring_row_height_m})
+            if (rows > 0) passes.push_back(dashedNosingParams(below, user, rows));
+    if (user.sparse_line_points > 0) passes.push_back(sparseLineParams(below, user));
+    if (user.tilted_ring_row_height_m > 0) passes.push_back(tiltedRingParams(below, user));
     DetectorParams no_spirals = user;
     no_spirals.detect_ascending = false;
     for (const DetectorParams& pass : passes)

@@ -12,6 +12,7 @@
 #include "core/Evaluation.h"
 #include "core/StairDetector.h"
 #include "support/BenchmarkScenes.h"
+#include "support/SceneExpectations.h"
 
 namespace stairmap {
 namespace {
@@ -229,25 +230,8 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(SceneCase{4004, 71, 0.01, 0.02, true, "level HDL-32 at 6.3 m"},
                     SceneCase{4004, 37, 0.01, 0.02, true, "depth camera, view ends at a riser"}));
 
-/// How many of the flights detected with `params` report the scene's first truth flight.
-int flightsOnTruth(const sim::RandomCloud& scene, const DetectorParams& params) {
-    int n = 0;
-    for (const Staircase& s :
-         StairDetector(params).detect(scene.cloud, scene.truth.observer_floor_z).staircases)
-        n += test::reportsFlight(s, scene.truth.staircases.front());
-    return n;
-}
-
-/// No flight is found on the truth of any benchmark scene (seed, index) of `scenes` with `off`
-/// (the detector with the pass under test turned off): that pass is what finds them.
-void expectNoneFoundWith(std::initializer_list<std::pair<int, int>> scenes,
-                         const DetectorParams& off) {
-    for (const auto& [seed, index] : scenes) {
-        const sim::RandomCloud scene = test::benchmarkScene(seed, index);
-        ASSERT_FALSE(scene.truth.staircases.empty());
-        EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
-    }
-}
+using test::expectNoneFoundWith;
+using test::flightsOnTruth;
 
 TEST(TiltedRingPass, IsWhatFindsAFlightSeenSideOnByAPitchedLidar) {
     const sim::RandomCloud scene = test::benchmarkScene(1001, 175);
