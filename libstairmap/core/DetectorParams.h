@@ -153,6 +153,12 @@ struct DetectorParams {
     /// front of it (FlightContinuation.h, floorNosingAbovePit). Run last, on the lines off the
     /// flights the other passes found: their readings of a flight are kept.
     bool ascend_from_below_floor = true;
+    /// Straight ascending flights read from their profile (ProfileChains.h): where no chain of
+    /// Algorithm 1 joins a flight's lines (pieces at their own places along each nosing, every
+    /// other nosing seen: a far level LiDAR), a last pass looks, among parallel lines off the
+    /// flights found, for a comb of heights and distances up the flight, a whole number of rises
+    /// above the floor, holding five steps or more.
+    bool profile_flights = true;
     /// An ascending chain whose lines stand one to three runs apart while its heights, read from
     /// riser hits above the sensor, put them on other levels (a far LiDAR's rings' spacing) is
     /// levelled by its lines' spacing, the nosings stepped over put back (MissingNosings.h,

@@ -19,7 +19,9 @@
 #include "core/LineFusion.h"
 #include "core/LongTreads.h"
 #include "core/MissingNosings.h"
+#include "core/NosingSlope.h"
 #include "core/OverlappingFlights.h"
+#include "core/ProfileChains.h"
 #include "core/RayClearance.h"
 #include "core/ReverseReadings.h"
 #include "core/RiserHits.h"
@@ -970,6 +972,61 @@ void addFlightsFromBelowFloor(const PointCloud& cloud, const Candidates& cand, d
                 found.push_back(std::move(s));
 }
 
+/// [m/m] a profile flight's surface rising along its nosings by more than this is a ramp's ring
+/// pieces (NosingSlope.h): the development ramp read so (dev5 r1079) slopes 0.195; the flights
+/// the pass finds on dev-dev6 0.00-0.06, after the refits that leave walls and boxes out
+constexpr double kProfileMaxNosingSlope = 0.12;
+
+/// Straight ascending flights read from their profile (DetectorParams::profile_flights): the
+/// front-drop lines of the first, dashed and sparse passes off the flights found, their combs
+/// (ProfileChains.h) corrected like other chains and kept as flights when they are no ramp's ring
+/// lines (neither rising along the run nor along the nosings), no deep level treads between
+/// every other nosing (bleachers' tiers), regular and off the flights found.
+void addProfileFlights(const PointCloud& cloud, const Candidates& cand, double floor_z,
+                       const DetectorParams& p, const DetectorParams& user,
+                       std::vector<Staircase>& found) {
+    if (!user.profile_flights || !user.detect_ascending) return;
+    std::vector<DetectorParams> passes = {p};
+    if (user.dashed_nosing_gap_m > 0)
+        for (const double rows : {user.row_height_m, user.tilted_ring_row_height_m})
+            if (rows > 0) passes.push_back(dashedNosingParams(p, user, rows));
+    if (user.sparse_line_points > 0) passes.push_back(sparseLineParams(p, user));
+    std::vector<LineSegment> lines;
+    for (const DetectorParams& pass : passes)
+        for (const LineSegment& l : extractLines(cand, kFrontDrop, floor_z, pass))
+            if (!onAnyFlightFootprint(l.centre(), found)) lines.push_back(l);
+    ProfileChainParams pp;
+    pp.floor_z = floor_z;
+    pp.min_rise_m = user.min_step_height_m;
+    pp.max_rise_m = user.max_step_height_m;
+    pp.min_run_m = user.min_step_depth_m;
+    pp.max_run_m = user.max_step_depth_m;
+    const FlightContinuationParams cp = continuationParams(user);
+    for (std::vector<LineSegment>& edges : findProfileChains(lines, pp)) {
+        if (user.edge_height_tolerance_m > 0)
+            correctRiserTopEdges(cloud, StairDirection::Ascending, floor_z, edges);
+        if (treadsRiseAlongTheRun(cloud, edges, cp)) continue;
+        const auto slope = slopeAlongNosings(cloud, edges);
+        if (slope && std::abs(*slope) > kProfileMaxNosingSlope) continue;
+        // Every other tier of bleachers put back: the seen edges' treads are level where a
+        // skipped step would rise (as for the ring-aliased chains of detectDirection).
+        std::vector<LineSegment> seen;
+        bool skipped = false;
+        for (const LineSegment& e : edges) {
+            if (e.num_points > 0)
+                seen.push_back(e);
+            else if (!seen.empty())
+                skipped = true;
+        }
+        if (skipped && treadsSeenLevel(cloud, seen)) continue;
+        Staircase s = makeStaircase(edges, StairDirection::Ascending, 0.5 * p.leaf_size_m);
+        if (static_cast<int>(s.steps.size()) < user.min_steps || overlapsAnyFlight(s, found) ||
+            !isRegularFlight(s, floor_z))
+            continue;
+        found.push_back(std::move(s));
+    }
+}
+
 /// [m] the column is looked for this far beyond the nosings' inner ends, and this far above the
 /// highest nosing (the column's top above the last tread) and kColumnBelow below the lowest
 constexpr double kColumnReach = 0.10, kColumnAbove = 0.30, kColumnBelow = 0.05;
@@ -1028,6 +1085,7 @@ DetectionResult StairDetector::detect(const PointCloud& cloud_robot, std::option
     if (params_.ascend_from_below_floor)
         addFlightsFromBelowFloor(cloud_robot, cand, floor, p, params_, result.staircases);
     placeFewLevelSpirals(few_level_spirals, result.staircases);
+    addProfileFlights(cloud_robot, cand, floor, p, params_, result.staircases);
     joinSpiralPieces(result.staircases);
     dropSpiralRepeats(result.staircases);
     for (Staircase& s : result.staircases) {

@@ -120,6 +120,7 @@ void readDetection(const SectionReader& r, DetectorParams& p) {
     r.boolean("continue_every_other_step", p.continue_every_other_step);
     r.boolean("continue_by_next_riser", p.continue_by_next_riser);
     r.boolean("ascend_from_below_floor", p.ascend_from_below_floor);
+    r.boolean("profile_flights", p.profile_flights);
     r.boolean("level_by_line_spacing", p.level_by_line_spacing);
     r.number("max_ramp_rms_ratio", p.max_ramp_rms_ratio);
     r.number("max_descent_start_off_level", p.max_descent_start_off_level);
