@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 #include "core/MissingNosings.h"
 
@@ -46,6 +47,26 @@ Comb collect(const std::vector<Across>& across, const std::vector<LineSegment>& 
         comb.points += lines[across[a].index].num_points;
     }
     return comb;
+}
+
+/// The teeth and points `collect` would find, without building the comb (the search scores
+/// many hypotheses and keeps one): `ks` is scratch space.
+std::pair<int, int> score(const std::vector<Across>& across, const std::vector<LineSegment>& lines,
+                          double s0, double z0, double run, double rise, double below,
+                          double above, const ProfileChainParams& p, std::vector<int>& ks) {
+    ks.clear();
+    int points = 0;
+    const double tol = spacingTolerance(run, p);
+    for (const Across& a : across) {
+        const int k = static_cast<int>(std::lround((a.s - s0) / run));
+        if (std::abs(a.s - s0 - k * run) > tol) continue;
+        const double dz = a.z - (z0 + k * rise);
+        if (dz < -below || dz > above) continue;
+        ks.push_back(k);
+        points += lines[a.index].num_points;
+    }
+    std::sort(ks.begin(), ks.end());
+    return {static_cast<int>(std::unique(ks.begin(), ks.end()) - ks.begin()), points};
 }
 
 /// The tooth member (position in `across`) whose line is the longest.
@@ -93,8 +114,10 @@ std::vector<int> contiguousTeeth(const Comb& comb, int max_gap) {
 /// rise (1 .. max_multiple steps apart); the comb holding most teeth wins (then most points).
 Comb bestComb(const std::vector<Across>& across, const std::vector<LineSegment>& lines,
               const ProfileChainParams& p) {
-    Comb best;
-    int best_teeth = 0;
+    int best_teeth = 0, best_points = 0;
+    double best_run = 0.0, best_rise = 0.0;
+    std::vector<int> ks;
+    const double tol = p.below_tolerance_m;  // the seed may be low or high itself
     const double reach = p.max_multiple * p.max_run_m + spacingTolerance(p.max_run_m, p);
     for (std::size_t j = 1; j < across.size(); ++j) {
         const double ds = across[j].s, dz = across[j].z - across[0].z;
@@ -105,16 +128,36 @@ Comb bestComb(const std::vector<Across>& across, const std::vector<LineSegment>&
                 rise < p.min_rise_m - p.below_tolerance_m ||
                 rise > p.max_rise_m + p.below_tolerance_m)
                 continue;
-            const double tol = p.below_tolerance_m;  // the seed may be low or high itself
-            Comb comb = collect(across, lines, 0.0, across[0].z, run, rise, tol, tol, p);
-            const int teeth = static_cast<int>(comb.teeth.size());
-            if (teeth > best_teeth || (teeth == best_teeth && comb.points > best.points)) {
-                best = std::move(comb);
+            const auto [teeth, points] =
+                score(across, lines, 0.0, across[0].z, run, rise, tol, tol, p, ks);
+            if (teeth > best_teeth || (teeth == best_teeth && points > best_points)) {
                 best_teeth = teeth;
+                best_points = points;
+                best_run = run;
+                best_rise = rise;
             }
         }
     }
-    return best;
+    if (best_teeth == 0) return {};
+    return collect(across, lines, 0.0, across[0].z, best_run, best_rise, tol, tol, p);
+}
+
+/// How many distinct distances up the flight the lines of `across` stand at (closer than a
+/// tooth's tolerance at the shortest run counts as one): a comb needs as many as its teeth.
+int distinctDistances(const std::vector<Across>& across, const ProfileChainParams& p) {
+    std::vector<double> s;
+    s.reserve(across.size());
+    for (const Across& a : across) s.push_back(a.s);
+    std::sort(s.begin(), s.end());
+    const double tol = spacingTolerance(p.min_run_m, p);
+    int distinct = 0;
+    double last = -std::numeric_limits<double>::infinity();
+    for (const double v : s)
+        if (v - last > tol) {
+            ++distinct;
+            last = v;
+        }
+    return distinct;
 }
 
 /// The frame lines are seen across: a point on the seed, the nosings' direction and the normal
@@ -144,7 +187,8 @@ Eigen::Vector2d meanDirection(const Comb& comb, const std::vector<Across>& acros
 }
 
 /// The seed's lines seen across it: parallel within max_turn_deg and within max_lateral_m.
-std::vector<Across> acrossSeed(const std::vector<LineSegment>& lines, std::size_t seed,
+std::vector<Across> acrossSeed(const std::vector<LineSegment>& lines,
+                               const std::vector<Eigen::Vector2d>& directions, std::size_t seed,
                                const Frame& frame, const std::vector<char>& taken,
                                const ProfileChainParams& p) {
     const LineSegment& l0 = lines[seed];
@@ -156,7 +200,7 @@ std::vector<Across> acrossSeed(const std::vector<LineSegment>& lines, std::size_
     for (std::size_t j = 0; j < lines.size(); ++j) {
         if (j == seed || taken[j]) continue;
         const LineSegment& l = lines[j];
-        if (std::abs(l.direction().dot(u)) < cos_max) continue;
+        if (std::abs(directions[j].dot(u)) < cos_max) continue;
         const double a = u.dot(l.start - c0), b = u.dot(l.end - c0);
         const double lo = std::min(a, b), hi = std::max(a, b);
         if (std::max(hi, hi0) - std::min(lo, lo0) > p.max_lateral_m) continue;
@@ -237,23 +281,28 @@ std::vector<std::vector<LineSegment>> findProfileChains(const std::vector<LineSe
     std::sort(seeds.begin(), seeds.end(),
               [&](std::size_t a, std::size_t b) { return lines[a].length() > lines[b].length(); });
     std::vector<char> taken(lines.size(), 0);
+    std::vector<Eigen::Vector2d> directions;  // each line's, once (a sine and a cosine)
+    directions.reserve(lines.size());
+    for (const LineSegment& l : lines) directions.push_back(l.direction());
     std::vector<std::vector<LineSegment>> chains;
     for (const std::size_t seed : seeds) {
         if (taken[seed]) continue;
         std::vector<Across> across =
-            acrossSeed(lines, seed, frameOf(lines[seed], lines[seed].direction()), taken, p);
-        if (static_cast<int>(across.size()) < p.min_seen_steps) continue;
+            acrossSeed(lines, directions, seed, frameOf(lines[seed], directions[seed]), taken, p);
+        if (distinctDistances(across, p) < p.min_seen_steps) continue;
         Comb comb = bestComb(across, lines, p);
         if (static_cast<int>(comb.teeth.size()) < p.min_seen_steps) continue;
         // The seed's own direction may be a few degrees off: over a flight's width that moves a
         // piece's distance up it by centimetres. The teeth's lines, weighted by their lengths,
         // give the nosings' direction; the lines are seen across that once more.
         const Frame frame =
-            frameOf(lines[seed], meanDirection(comb, across, lines, lines[seed].direction()));
-        across = acrossSeed(lines, seed, frame, taken, p);
+            frameOf(lines[seed], meanDirection(comb, across, lines, directions[seed]));
+        across = acrossSeed(lines, directions, seed, frame, taken, p);
         comb = bestComb(across, lines, p);
         if (static_cast<int>(comb.teeth.size()) < p.min_seen_steps) continue;
         refit(comb, across, lines);
+        if (!std::isfinite(comb.rise) || !(comb.run >= p.min_run_m && comb.run <= p.max_run_m))
+            continue;  // the refit left the bounds (chainOf would refuse it): no comb to collect
         comb = collect(across, lines, comb.s0, comb.z0, comb.run, comb.rise, p.below_tolerance_m,
                        p.above_tolerance_m, p);
         const std::vector<int> teeth = contiguousTeeth(comb, p.max_gap_steps);
