@@ -6,7 +6,9 @@
 
 #include <initializer_list>
 #include <utility>
+#include <vector>
 
+#include "core/Evaluation.h"
 #include "core/StairDetector.h"
 #include "support/BenchmarkScenes.h"
 
@@ -30,6 +32,24 @@ inline void expectNoneFoundWith(std::initializer_list<std::pair<int, int>> scene
         ASSERT_FALSE(scene.truth.staircases.empty());
         EXPECT_EQ(flightsOnTruth(scene, off), 0) << "seed " << seed << " scene " << index;
     }
+}
+
+/// The flights the detector (default parameters, floor at floor_z) reports on `truth`, each
+/// checked to lie on its nosings as `make eval` counts them (median edge distances) and to read
+/// its rise within 1 cm and its run within 3 cm.
+inline std::vector<Staircase> flightsReadOnTruth(const sim::RandomCloud& scene,
+                                                 const StaircaseTruth& truth, double floor_z) {
+    std::vector<Staircase> on_truth;
+    for (const Staircase& s : StairDetector().detect(scene.cloud, floor_z).staircases) {
+        if (!reportsFlight(s, truth)) continue;
+        const EdgeDistances d = edgeDistances(s, truth);
+        EXPECT_LT(d.median_xy_m, EvaluationParams().max_xy_m);
+        EXPECT_LT(d.median_z_m, EvaluationParams().max_z_m);
+        EXPECT_NEAR(s.step_height, truth.rise_m, 0.01);
+        EXPECT_NEAR(s.step_depth, truth.run_m, 0.03);
+        on_truth.push_back(s);
+    }
+    return on_truth;
 }
 
 }  // namespace stairmap::test
