@@ -36,7 +36,8 @@ TEST(DetectorConfig, ReadsNumbersIntegersBooleansAndRobotHeight) {
         "[detector]\nleaf_size_m = 0.03\nmin_steps = 4\ndetect_descending = false\n"
         "robot_height_m = 0.62\nmax_slope_deg = 55\nsplit_noise_factor = 0\n"
         "max_split_distance_m = 0.04\nmax_level_tread_depth_m = 0\n"
-        "min_level_tread_slope_deg = 12\nmin_deep_tread_m = 0.5\nlevel_by_line_spacing = false\n");
+        "min_level_tread_slope_deg = 12\nmin_deep_tread_m = 0.5\nlevel_by_line_spacing = false\n"
+        "profile_flights = false\n");
     EXPECT_DOUBLE_EQ(c.params.leaf_size_m, 0.03);
     EXPECT_EQ(c.params.min_steps, 4);
     EXPECT_FALSE(c.params.detect_descending);
@@ -48,6 +49,7 @@ TEST(DetectorConfig, ReadsNumbersIntegersBooleansAndRobotHeight) {
     EXPECT_DOUBLE_EQ(c.params.min_level_tread_slope_deg, 12.0);
     EXPECT_DOUBLE_EQ(c.params.min_deep_tread_m, 0.5);
     EXPECT_FALSE(c.params.level_by_line_spacing);
+    EXPECT_FALSE(c.params.profile_flights);
     ASSERT_TRUE(c.robot_height_m.has_value());
     EXPECT_DOUBLE_EQ(*c.robot_height_m, 0.62);
 }
@@ -86,6 +88,7 @@ TEST(DetectorConfig, ShippedDefaultIniMatchesTheBuiltInDefaults) {
     EXPECT_EQ(c.params.continue_every_other_step, d.continue_every_other_step);
     EXPECT_EQ(c.params.continue_by_next_riser, d.continue_by_next_riser);
     EXPECT_EQ(c.params.ascend_from_below_floor, d.ascend_from_below_floor);
+    EXPECT_EQ(c.params.profile_flights, d.profile_flights);
     EXPECT_EQ(c.params.level_by_line_spacing, d.level_by_line_spacing);
     EXPECT_DOUBLE_EQ(c.params.max_ramp_rms_ratio, d.max_ramp_rms_ratio);
     EXPECT_DOUBLE_EQ(c.params.max_descent_start_off_level, d.max_descent_start_off_level);
