@@ -163,23 +163,28 @@ private:
 };
 
 /// Last tread bin walking from `from` in direction `dir` (+1 / -1): across any hole up to
-/// max_gap, and across a longer one up to side_band when nothing in it rises above the tread (a
-/// sparse or shadowed tread; a wall or a box stops the walk after max_gap). A bin where the
-/// step is seen on its bare nosing only counts as tread (a far ring may hit a step only there).
-int walkTread(const TreadScan& t, int from, int dir, const StepExtentParams& p) {
+/// max_gap, and across a longer one up to `open_gap_m` when nothing in it rises above the tread
+/// (a sparse or shadowed tread, a nosing seen in dashes; a wall or a box stops the walk after
+/// max_gap). A bin where the step is seen on its bare nosing only counts as tread (a far ring
+/// may hit a step only there); with an open gap beyond the side band (a straight flight), such
+/// a bin resumes the tread on its own after a hole with nothing above.
+int walkTread(const TreadScan& t, int from, int dir, double open_gap_m, const StepExtentParams& p) {
     const int max_gap = static_cast<int>(p.max_gap_m / p.bin_m);
-    const int long_gap = static_cast<int>(p.side_band_m / p.bin_m);
+    const int long_gap = static_cast<int>(open_gap_m / p.bin_m);
+    const bool dashes = open_gap_m > p.side_band_m;
     const int max_steps = static_cast<int>(p.max_extension_m / p.bin_m);
     int last = from, gap = 0;
     bool above = false;
     for (int i = from + dir, n = 0; i >= 0 && i < static_cast<int>(t.bins.size()) && n < max_steps;
          i += dir, ++n) {
         // After a hole the tread resumes only with another tread bin within the next two (not
-        // at a stray point, such as where a stringer's top crosses the tread's height).
+        // at a stray point, such as where a stringer's top crosses the tread's height), or at a
+        // bare nosing's dash when nothing rose above the tread in the hole.
         const auto treadAt = [&](int j) {
             return j >= 0 && j < static_cast<int>(t.bins.size()) && t.isStep(j);
         };
-        const bool resumes = gap <= 1 || treadAt(i + dir) || treadAt(i + 2 * dir);
+        const bool resumes = gap <= 1 || treadAt(i + dir) || treadAt(i + 2 * dir) ||
+                             (dashes && !above && t.onBareNosing(i));
         if (t.isStep(i) && resumes) {
             last = i;
             gap = 0;
@@ -220,10 +225,10 @@ struct Extent {
     StairSide left = StairSide::Unseen, right = StairSide::Unseen;
 };
 
-Extent measure(const TreadScan& t, const StepExtentParams& p) {
+Extent measure(const TreadScan& t, double open_gap_m, const StepExtentParams& p) {
     Extent x;
-    x.lo = walkTread(t, t.edge_lo, -1, p);
-    x.hi = walkTread(t, t.edge_hi, +1, p);
+    x.lo = walkTread(t, t.edge_lo, -1, open_gap_m, p);
+    x.hi = walkTread(t, t.edge_hi, +1, open_gap_m, p);
     x.left = sideBeyond(t, x.lo, -1, p);
     x.right = sideBeyond(t, x.hi, +1, p);
     return x;
@@ -393,6 +398,15 @@ double widthAcrossSides(const std::vector<TreadScan>& scans, const Staircase& st
     return hi[hi.size() - 1 - q_hi] - lo[q_lo];
 }
 
+/// [deg] Largest angle between two of the scans' own edge directions (as lines, 0-90 deg).
+double edgeSpreadDeg(const std::vector<TreadScan>& scans) {
+    double min_cos = 1.0;
+    for (std::size_t a = 0; a < scans.size(); ++a)
+        for (std::size_t b = a + 1; b < scans.size(); ++b)
+            min_cos = std::min(min_cos, std::abs(scans[a].edge_u.dot(scans[b].edge_u)));
+    return std::acos(std::clamp(min_cos, 0.0, 1.0)) * 180.0 / M_PI;
+}
+
 }  // namespace
 
 void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepExtentParams& p) {
@@ -421,10 +435,15 @@ void measureStepExtents(const PointCloud& cloud, Staircase& stairs, const StepEx
         if (!(q.x() >= lo.x() && q.x() <= hi.x() && q.y() >= lo.y() && q.y() <= hi.y())) continue;
         along.forEachReaching(q, [&](std::size_t k) { addPoint(scans[k], q, p); });
     }
+    // A nosing seen in dashes is walked across on straight flights only: a spiral's radial
+    // nosing line runs on across the column and past the rim (bundled spiral_0: two steps read
+    // 1.50 m for 1.28 m).
+    const double open_gap =
+        edgeSpreadDeg(scans) <= p.dashed_max_turn_deg ? p.max_open_gap_m : p.side_band_m;
     std::vector<Extent> ext;
     SideVotes left, right;
     for (const TreadScan& t : scans) {
-        ext.push_back(measure(t, p));
+        ext.push_back(measure(t, open_gap, p));
         applyExtent(t, ext.back(), p, stairs.steps[t.step]);
         left.add(ext.back().left);
         right.add(ext.back().right);

@@ -1,12 +1,15 @@
 // `stairmap export` end to end on the bundled two-floor run, and its bad-input exits.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
+#include <vector>
 
 #include "CliRunner.h"
 #include "export/RobotProfile.h"
@@ -33,6 +36,35 @@ std::string robotArgs() {
 json readJsonFile(const std::string& path) {
     std::ifstream in(path);
     return json::parse(in);
+}
+
+/// x, y and yaw of each pose of a TUM trajectory file (in file order).
+std::vector<Eigen::Vector3d> readTumPlanar(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<Eigen::Vector3d> poses;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream fields(line);
+        double t, x, y, z, qx, qy, qz, qw;
+        if (!(fields >> t >> x >> y >> z >> qx >> qy >> qz >> qw)) continue;
+        poses.emplace_back(x, y, std::atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz)));
+    }
+    return poses;
+}
+
+/// A world point of the two-floor run carried into the frame of the poses handed to the mapper
+/// (poses.tum, with drift) by the error of the true pose nearest to it (gt_trajectory.tum).
+Eigen::Vector2d intoEstimatedFrame(const Eigen::Vector2d& world) {
+    const std::string ds = kSrc + "/datasets/two_floor/";
+    const auto est = readTumPlanar(ds + "poses.tum"),
+               truth = readTumPlanar(ds + "gt_trajectory.tum");
+    EXPECT_EQ(est.size(), truth.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < std::min(est.size(), truth.size()); ++i)
+        if ((truth[i].head<2>() - world).norm() < (truth[k].head<2>() - world).norm()) k = i;
+    const Eigen::Rotation2Dd turn(est[k].z() - truth[k].z());
+    return est[k].head<2>() + turn * (world - truth[k].head<2>());
 }
 
 class ExportTwoFloor : public ::testing::Test {
@@ -180,14 +212,17 @@ TEST_F(ExportTwoFloor, GeoJsonAndSpotFiles) {
     EXPECT_EQ(lines, 4);
     const json spot = readJsonFile(out("staircases_spot.json"));
     ASSERT_GE(spot.at("staircases").size(), 2u);
-    // stair_a's origin: bottom centre of its first riser, (2.0, 0.8, 0.0) in the truth.
+    // stair_a's origin: bottom centre of its first riser, (2.0, 0.8, 0.0) in the truth. The map is
+    // in the frame of the drifting poses handed to the mapper (0.46 m off in y there): the origin
+    // is expected where the pose error of the nearest pose carries it.
+    const Eigen::Vector2d expected = intoEstimatedFrame({2.0, 0.8});
     double best = 1e9;
     for (const json& s : spot.at("staircases")) {
         const json& p = s.at("staircase").at("stair_tform").at("frame_tform_stairs").at("position");
-        best = std::min(best,
-                        std::hypot(p.at("x").get<double>() - 2.0, p.at("y").get<double>() - 0.8));
+        best = std::min(best, std::hypot(p.at("x").get<double>() - expected.x(),
+                                         p.at("y").get<double>() - expected.y()));
     }
-    EXPECT_LT(best, 0.3);
+    EXPECT_LT(best, 0.15);
     EXPECT_NE(result_.out.find("2 nodes, 4 edges"), std::string::npos) << result_.out;
 }
 

@@ -262,6 +262,50 @@ TEST(StepExtent, AStraightFlightsStepsAreMeasuredAlongItsCommonDirection) {
             << "step " << k;
 }
 
+/// A far ring hits each nosing line in single dashes every 0.4 m across the flight (y = -0.8,
+/// -0.4, ... 0.8); the treads' surfaces are seen only in the middle (y -0.1 .. 0.3, where the found
+/// pieces lie). With `box`, a box beside the middle stands on every tread at y 0.55-0.65.
+PointCloud dashedNosingsCloud(bool box) {
+    PointCloud cloud;
+    for (int k = 0; k + 1 < kSteps; ++k) {
+        for (int d = -2; d <= 2; ++d)
+            cloud.emplace_back(static_cast<float>(nosingX(k) - 0.02), static_cast<float>(0.4 * d),
+                               static_cast<float>(treadZ(k)));
+        for (double x = nosingX(k) + 0.05; x < nosingX(k + 1) - 0.05; x += 0.04) {
+            for (double y = -0.1; y <= 0.3; y += 0.04)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(treadZ(k)));
+            for (double y = 0.55; box && y <= 0.65; y += 0.02)
+                cloud.emplace_back(static_cast<float>(x), static_cast<float>(y),
+                                   static_cast<float>(treadZ(k) + 0.3));
+        }
+    }
+    return cloud;
+}
+
+TEST(StepExtent, ANosingSeenInDashesIsMeasuredAcrossTheHolesBetweenThem) {
+    // dev4 r0207: a far HDL-32 ring hit a descending flight's nosings in dashes 0.3-0.4 m apart;
+    // the steps ended at the first hole, 0.43 m of 1.60 m.
+    Staircase s = pieces();
+    measureStepExtents(dashedNosingsCloud(false), s);
+    EXPECT_NEAR(s.step_width, 2 * kHalfWidth, 0.06);
+    // Holes only as long as the side band (the walk before): the steps end at the next dash.
+    StepExtentParams short_holes;
+    short_holes.max_open_gap_m = short_holes.side_band_m;
+    Staircase t = pieces();
+    measureStepExtents(dashedNosingsCloud(false), t, short_holes);
+    EXPECT_LT(t.step_width, 0.9);
+}
+
+TEST(StepExtent, ABoxInAHoleBetweenNosingDashesEndsTheStep) {
+    // Something rising above the treads in the hole: the steps end at the dash before it and the
+    // side is a wall; the other side still reaches its last dash.
+    Staircase s = pieces();
+    measureStepExtents(dashedNosingsCloud(true), s);
+    EXPECT_NEAR(s.step_width, 1.2, 0.06);
+    EXPECT_EQ(s.left_side, StairSide::Wall);
+}
+
 TEST(StepExtent, AStringerBesideTheTreadsIsNoPartOfTheSteps) {
     // An open-sided flight with a stringer just beyond the treads' right ends: a 5 cm wide beam
     // whose top rises with the flight and crosses each nosing's height at the nosing.
