@@ -5,44 +5,28 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <ostream>
-
 #include "support/BenchmarkScenes.h"
 #include "support/SceneExpectations.h"
 
 namespace stairmap {
 namespace {
 
-struct DashedCase {
-    int seed = 0, index = 0;
-    const char* why = "";
-};
-
-std::ostream& operator<<(std::ostream& os, const DashedCase& c) {
-    return os << "seed " << c.seed << " scene " << c.index << " (" << c.why << ")";
-}
-
-class DashedNosings : public testing::TestWithParam<DashedCase> {};
+class DashedNosings : public testing::TestWithParam<test::NamedScene> {};
 
 TEST_P(DashedNosings, TheFlightIsReadAsWideAsItIs) {
-    const DashedCase& c = GetParam();
-    const sim::RandomCloud scene = test::benchmarkScene(c.seed, c.index);
-    ASSERT_EQ(scene.truth.staircases.size(), 1u);
-    const StaircaseTruth& truth = scene.truth.staircases.front();
-    ASSERT_TRUE(scene.truth.observer_floor_z.has_value());
-    const auto on_truth = test::flightsReadOnTruth(scene, truth, *scene.truth.observer_floor_z);
-    ASSERT_EQ(on_truth.size(), 1u);
+    const auto found = test::onlyFlightReadOnTruth(GetParam());
+    ASSERT_TRUE(found.has_value());
     // Before: 0.43 m for 1.60 m, 1.56 m for 2.44 m, 1.42 m for 2.29 m.
-    EXPECT_NEAR(on_truth.front().step_width, truth.width_m, 0.10);
+    EXPECT_NEAR(found->first.step_width, found->second.width_m, 0.10);
 }
 
 // A level HDL-32 over a descending flight (dev4 r0207), an OS0-128 and an OS1-64 beside wide
 // open-riser flights (dev4 r0123, dev6 r0532): each nosing hit in dashes 0.3-0.5 m apart.
-INSTANTIATE_TEST_SUITE_P(DevelopmentScenes, DashedNosings,
-                         testing::Values(DashedCase{25025, 207, "HDL-32 over a descending flight"},
-                                         DashedCase{25025, 123, "OS0-128, wide open-riser flight"},
-                                         DashedCase{28028, 532, "OS1-64, wide open-riser flight"}));
+INSTANTIATE_TEST_SUITE_P(
+    DevelopmentScenes, DashedNosings,
+    testing::Values(test::NamedScene{25025, 207, "HDL-32 over a descending flight"},
+                    test::NamedScene{25025, 123, "OS0-128, wide open-riser flight"},
+                    test::NamedScene{28028, 532, "OS1-64, wide open-riser flight"}));
 
 }  // namespace
 }  // namespace stairmap

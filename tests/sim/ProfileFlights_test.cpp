@@ -8,8 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include <ostream>
-
 #include "core/StairDetector.h"
 #include "support/BenchmarkScenes.h"
 #include "support/SceneExpectations.h"
@@ -17,26 +15,12 @@
 namespace stairmap {
 namespace {
 
-struct ProfileCase {
-    int seed = 0, index = 0;
-    const char* why = "";
-};
-
-std::ostream& operator<<(std::ostream& os, const ProfileCase& c) {
-    return os << "seed " << c.seed << " scene " << c.index << " (" << c.why << ")";
-}
-
-class ReadFromTheProfile : public testing::TestWithParam<ProfileCase> {};
+class ReadFromTheProfile : public testing::TestWithParam<test::NamedScene> {};
 
 TEST_P(ReadFromTheProfile, IsFoundOnceWithItsRiseAndRun) {
-    const ProfileCase& c = GetParam();
-    const sim::RandomCloud scene = test::benchmarkScene(c.seed, c.index);
-    ASSERT_EQ(scene.truth.staircases.size(), 1u);
-    const StaircaseTruth& truth = scene.truth.staircases.front();
-    ASSERT_TRUE(scene.truth.observer_floor_z.has_value());
-    const auto on_truth = test::flightsReadOnTruth(scene, truth, *scene.truth.observer_floor_z);
-    ASSERT_EQ(on_truth.size(), 1u);
-    EXPECT_GE(static_cast<int>(on_truth.front().steps.size()), 7);  // the whole visible flight
+    const auto found = test::onlyFlightReadOnTruth(GetParam());
+    ASSERT_TRUE(found.has_value());
+    EXPECT_GE(static_cast<int>(found->first.steps.size()), 7);  // the whole visible flight
 }
 
 // Open-riser flights: a level HDL-32 5.9 m from a 16-step flight of 0.113 m rises, lines on 10
@@ -45,10 +29,10 @@ TEST_P(ReadFromTheProfile, IsFoundOnceWithItsRiseAndRun) {
 // of 0.18 and 0.19 m rises, each at its own place (dev5 r0701, dev6 r0858).
 INSTANTIATE_TEST_SUITE_P(
     DevelopmentScenes, ReadFromTheProfile,
-    testing::Values(ProfileCase{4004, 247, "level HDL-32, open risers, pieces, every other"},
-                    ProfileCase{3003, 287, "level VLP-16, open risers, every other nosing"},
-                    ProfileCase{26026, 701, "far level LiDAR, open risers, pieces"},
-                    ProfileCase{28028, 858, "far LiDAR, open risers, pieces"}));
+    testing::Values(test::NamedScene{4004, 247, "level HDL-32, open risers, pieces, every other"},
+                    test::NamedScene{3003, 287, "level VLP-16, open risers, every other nosing"},
+                    test::NamedScene{26026, 701, "far level LiDAR, open risers, pieces"},
+                    test::NamedScene{28028, 858, "far LiDAR, open risers, pieces"}));
 
 TEST(ReadFromTheProfile, IsWhatTheProfilePassFinds) {
     DetectorParams off;

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <initializer_list>
+#include <optional>
+#include <ostream>
 #include <utility>
 #include <vector>
 
@@ -50,6 +52,32 @@ inline std::vector<Staircase> flightsReadOnTruth(const sim::RandomCloud& scene,
         on_truth.push_back(s);
     }
     return on_truth;
+}
+
+/// A benchmark scene of a parameterised suite: which one and why it is there.
+struct NamedScene {
+    int seed = 0, index = 0;
+    const char* why = "";
+};
+
+inline std::ostream& operator<<(std::ostream& os, const NamedScene& c) {
+    return os << "seed " << c.seed << " scene " << c.index << " (" << c.why << ")";
+}
+
+/// The flight read on the only truth flight of a single-flight scene (flightsReadOnTruth, floor
+/// from the truth), with that truth: nullopt, with a test failure, when the scene is not one or
+/// the flight is read other than once.
+inline std::optional<std::pair<Staircase, StaircaseTruth>> onlyFlightReadOnTruth(
+    const NamedScene& c) {
+    const sim::RandomCloud scene = benchmarkScene(c.seed, c.index);
+    const bool single = scene.truth.staircases.size() == 1 && scene.truth.observer_floor_z;
+    EXPECT_TRUE(single) << c;
+    if (!single) return std::nullopt;
+    const StaircaseTruth& truth = scene.truth.staircases.front();
+    const auto on_truth = flightsReadOnTruth(scene, truth, *scene.truth.observer_floor_z);
+    EXPECT_EQ(on_truth.size(), 1u) << c;
+    if (on_truth.size() != 1) return std::nullopt;
+    return std::make_pair(on_truth.front(), truth);
 }
 
 }  // namespace stairmap::test
