@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "core/MissingNosings.h"
@@ -31,6 +32,17 @@ double spacingTolerance(double run, const ProfileChainParams& p) {
     return std::max(0.04, p.spacing_tolerance * run);
 }
 
+/// The tooth of the comb (s0, z0, run, rise) that `a` stands on: within `tol` of a whole number
+/// of runs up the flight, and from `below` under to `above` over that tooth's height.
+std::optional<int> toothOf(const Across& a, double s0, double z0, double run, double rise,
+                           double tol, double below, double above) {
+    const int k = static_cast<int>(std::lround((a.s - s0) / run));
+    if (std::abs(a.s - s0 - k * run) > tol) return std::nullopt;
+    const double dz = a.z - (z0 + k * rise);
+    if (dz < -below || dz > above) return std::nullopt;
+    return k;
+}
+
 /// The teeth of the comb (s0, z0, run, rise) that the lines of `across` hold.
 Comb collect(const std::vector<Across>& across, const std::vector<LineSegment>& lines, double s0,
              double z0, double run, double rise, double below, double above,
@@ -38,12 +50,9 @@ Comb collect(const std::vector<Across>& across, const std::vector<LineSegment>& 
     Comb comb{s0, z0, run, rise, {}, 0};
     const double tol = spacingTolerance(run, p);
     for (std::size_t a = 0; a < across.size(); ++a) {
-        const double steps = (across[a].s - s0) / run;
-        const int k = static_cast<int>(std::lround(steps));
-        if (std::abs(across[a].s - s0 - k * run) > tol) continue;
-        const double dz = across[a].z - (z0 + k * rise);
-        if (dz < -below || dz > above) continue;
-        comb.teeth[k].push_back(static_cast<int>(a));
+        const auto k = toothOf(across[a], s0, z0, run, rise, tol, below, above);
+        if (!k) continue;
+        comb.teeth[*k].push_back(static_cast<int>(a));
         comb.points += lines[across[a].index].num_points;
     }
     return comb;
@@ -58,11 +67,9 @@ std::pair<int, int> score(const std::vector<Across>& across, const std::vector<L
     int points = 0;
     const double tol = spacingTolerance(run, p);
     for (const Across& a : across) {
-        const int k = static_cast<int>(std::lround((a.s - s0) / run));
-        if (std::abs(a.s - s0 - k * run) > tol) continue;
-        const double dz = a.z - (z0 + k * rise);
-        if (dz < -below || dz > above) continue;
-        ks.push_back(k);
+        const auto k = toothOf(a, s0, z0, run, rise, tol, below, above);
+        if (!k) continue;
+        ks.push_back(*k);
         points += lines[a.index].num_points;
     }
     std::sort(ks.begin(), ks.end());

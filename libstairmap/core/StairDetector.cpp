@@ -1,7 +1,6 @@
 #include "core/StairDetector.h"
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
 #include <limits>
 #include <map>
