@@ -8,13 +8,13 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <vector>
 
 #include "CliRunner.h"
 #include "export/RobotProfile.h"
 #include "io/config/RobotProfileConfig.h"
 #include "io/export/MapServerReader.h"
+#include "io/rawlog/TumTrajectory.h"
 
 namespace stairmap::test {
 namespace {
@@ -38,33 +38,20 @@ json readJsonFile(const std::string& path) {
     return json::parse(in);
 }
 
-/// x, y and yaw of each pose of a TUM trajectory file (in file order).
-std::vector<Eigen::Vector3d> readTumPlanar(const std::string& path) {
-    std::ifstream in(path);
-    std::vector<Eigen::Vector3d> poses;
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream fields(line);
-        double t, x, y, z, qx, qy, qz, qw;
-        if (!(fields >> t >> x >> y >> z >> qx >> qy >> qz >> qw)) continue;
-        poses.emplace_back(x, y, std::atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz)));
-    }
-    return poses;
-}
-
 /// A world point of the two-floor run carried into the frame of the poses handed to the mapper
 /// (poses.tum, with drift) by the error of the true pose nearest to it (gt_trajectory.tum).
-Eigen::Vector2d intoEstimatedFrame(const Eigen::Vector2d& world) {
+Eigen::Vector3d intoEstimatedFrame(const Eigen::Vector3d& world) {
     const std::string ds = kSrc + "/datasets/two_floor/";
-    const auto est = readTumPlanar(ds + "poses.tum"),
-               truth = readTumPlanar(ds + "gt_trajectory.tum");
+    const auto est = io::TumTrajectory::load(ds + "poses.tum").poses();
+    const auto truth = io::TumTrajectory::load(ds + "gt_trajectory.tum").poses();
     EXPECT_EQ(est.size(), truth.size());
+    const auto distance = [&](std::size_t i) {
+        return (truth[i].T_world_robot.translation() - world).head<2>().norm();
+    };
     std::size_t k = 0;
     for (std::size_t i = 0; i < std::min(est.size(), truth.size()); ++i)
-        if ((truth[i].head<2>() - world).norm() < (truth[k].head<2>() - world).norm()) k = i;
-    const Eigen::Rotation2Dd turn(est[k].z() - truth[k].z());
-    return est[k].head<2>() + turn * (world - truth[k].head<2>());
+        if (distance(i) < distance(k)) k = i;
+    return est[k].T_world_robot * (truth[k].T_world_robot.inverse() * world);
 }
 
 class ExportTwoFloor : public ::testing::Test {
@@ -215,7 +202,7 @@ TEST_F(ExportTwoFloor, GeoJsonAndSpotFiles) {
     // stair_a's origin: bottom centre of its first riser, (2.0, 0.8, 0.0) in the truth. The map is
     // in the frame of the drifting poses handed to the mapper (0.46 m off in y there): the origin
     // is expected where the pose error of the nearest pose carries it.
-    const Eigen::Vector2d expected = intoEstimatedFrame({2.0, 0.8});
+    const Eigen::Vector3d expected = intoEstimatedFrame({2.0, 0.8, 0.0});
     double best = 1e9;
     for (const json& s : spot.at("staircases")) {
         const json& p = s.at("staircase").at("stair_tform").at("frame_tform_stairs").at("position");
