@@ -89,12 +89,16 @@ bench: build
 # by `stairmap sim --random`, cached in $(EVAL_DIR)/<set>-seed<S>-n<N>-v<generator version> (a rerun
 # reuses a complete set), then the per-family table of `stairmap eval --detect` for each; the full
 # reports (misses, false positives) go to <set dir>.eval.txt, a breakdown by sensor kind to
-# <set dir>.sensors.txt.
+# <set dir>.sensors.txt. Then the "all" row of each set in a few perturbed realisations (every
+# coordinate moved by up to EVAL_PERTURB_M, far below sensor noise): how far the scores move
+# between them is the evaluation's noise floor (docs/detector.md); reports in <set dir>.perturb<S>.txt.
 EVAL_DIR        ?= $(BUILD_DIR)/eval
 EVAL_N          ?= 300
 EVAL_DEV_SEED   ?= 1001
 EVAL_CHECK_SEED ?= 2002
 EVAL_JOBS       ?= 2
+EVAL_PERTURB_M  ?= 0.00001
+EVAL_PERTURB_SEEDS ?= 1 2 3
 
 eval: build
 	@ver=$$($(STAIRMAP) sim --random-version) || exit 1; \
@@ -110,6 +114,11 @@ eval: build
 	  echo "== $$name set (seed $$seed, $(EVAL_N) scenes, generator v$$ver): current detector"; \
 	  sed -n '1,/^false positives on true flights/p' $$dir.eval.txt; \
 	  echo "-- by sensor kind"; sed -n '3,/^all /p' $$dir.sensors.txt; \
+	  echo "-- perturbed realisations (every coordinate moved by up to $(EVAL_PERTURB_M) m)"; \
+	  for ps in $(EVAL_PERTURB_SEEDS); do \
+	    $(STAIRMAP) eval --detect $$dir --perturb-m $(EVAL_PERTURB_M) --perturb-seed $$ps > $$dir.perturb$$ps.txt || exit 1; \
+	    printf 'seed %s  ' $$ps; grep '^all ' $$dir.perturb$$ps.txt; \
+	  done; \
 	done
 
 clean:

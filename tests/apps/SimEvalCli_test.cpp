@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "CliRunner.h"
 #include "io/cloud/CloudFile.h"
@@ -127,6 +129,56 @@ TEST(SimEvalCli, EvalScoresADetectOutputAgainstItsTruth) {
     const auto bad = runStairmap("eval '" + dir + "/orphan.json'", dir);
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("orphan"), std::string::npos) << bad.err;
+}
+
+
+// --perturb-m: the bundled clouds detected again in perturbed realisations (every coordinate moved
+// by up to 0.01 mm). The truth is the bundled one: every flight is still found, none added; the
+// realisation is reported, is the same for the same seed, and differs from the unperturbed run.
+TEST(SimEvalCli, EvalDetectsPerturbedRealisationsOfTheBundledClouds) {
+    const auto dir = cliScratchDir("eval_cli", "perturbed");
+    const std::string clouds = std::string("'") + STAIRMAP_SOURCE_DIR + "/datasets/clouds'";
+    auto run = [&](const std::string& extra) {
+        const auto r = runStairmap("eval --detect " + clouds + " --json " + extra, dir);
+        EXPECT_EQ(r.exit_code, 0) << extra << ": " << r.err;
+        return r.exit_code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+    };
+    // Per-sample errors (rise, run, width...), which a realisation moves by a fraction of a mm.
+    auto errors = [](const nlohmann::json& j) {
+        std::vector<nlohmann::json> e;
+        for (const auto& s : j.at("samples")) e.push_back(s.at("errors"));
+        return e;
+    };
+    const auto plain = run("");
+    ASSERT_FALSE(plain.contains("perturbation"));
+    for (const int seed : {1, 2}) {
+        const auto j = run("--perturb-m 1e-5 --perturb-seed " + std::to_string(seed));
+        ASSERT_TRUE(j.contains("perturbation")) << seed;
+        EXPECT_DOUBLE_EQ(j.at("perturbation").at("amplitude_m").get<double>(), 1e-5);
+        EXPECT_EQ(j.at("perturbation").at("seed").get<int>(), seed);
+        const auto& total = j.at("total");
+        EXPECT_EQ(total.at("samples").get<int>(), 30) << seed;
+        EXPECT_EQ(total.at("detections").get<int>(), 30) << seed;
+        EXPECT_EQ(total.at("false_positives").get<int>(), 0) << seed;
+        EXPECT_NE(errors(j), errors(plain)) << "seed " << seed << " changed nothing";
+        if (seed == 1) {
+            const auto again = run("--perturb-m 1e-5 --perturb-seed 1");
+            EXPECT_EQ(errors(again), errors(j)) << "the same seed, another realisation";
+        }
+    }
+    const auto text = runStairmap("eval --detect " + clouds + " --perturb-m 1e-5", dir);
+    EXPECT_NE(text.out.find("perturbed realisation: every coordinate moved by up to 1e-05 m (seed 1)"),
+              std::string::npos)
+        << text.out;
+    for (const char* bad : {"0.02", "-1e-5", "nan", "wide"}) {
+        const auto r = runStairmap("eval --detect " + clouds + " --perturb-m " + bad, dir);
+        EXPECT_EQ(r.exit_code, 2) << bad;
+        EXPECT_NE(r.err.find("perturb"), std::string::npos) << bad << ": " << r.err;
+    }
+    // Without --detect there is no cloud to perturb: refused, not ignored.
+    const auto scored = runStairmap("eval " + clouds + " --perturb-m 1e-5", dir);
+    EXPECT_EQ(scored.exit_code, 2);
+    EXPECT_NE(scored.err.find("--detect"), std::string::npos) << scored.err;
 }
 
 }  // namespace
