@@ -3,17 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/SplitMix.h"
+
 namespace stairmap {
 namespace {
-
-/// SplitMix64's finaliser: a well-mixed 64-bit value from a counter (no state to carry, so the
-/// offset of a point depends on its index alone, not on the points before it).
-std::uint64_t mix(std::uint64_t z) {
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
 
 /// Uniform in [-1, 1) from the top 53 bits.
 double unitOffset(std::uint64_t bits) {
@@ -28,10 +21,11 @@ void perturbCloud(PointCloud& cloud, double amplitude_m, std::uint64_t seed, std
                                     " m: must be in [0, " + std::to_string(kMaxPerturbationM) +
                                     "] m");
     if (amplitude_m == 0.0) return;
-    const std::uint64_t base = mix(mix(seed) ^ stream);
+    // Counter-based: a point's offsets depend on its index alone, not on the points before it.
+    const std::uint64_t base = splitMix64(splitMix64(seed) ^ stream);
     for (std::size_t i = 0; i < cloud.size(); ++i) {
         for (int k = 0; k < 3; ++k) {
-            const std::uint64_t bits = mix(base + 3 * static_cast<std::uint64_t>(i) + k);
+            const std::uint64_t bits = splitMix64(base + 3 * static_cast<std::uint64_t>(i) + k);
             cloud[i][k] = static_cast<float>(cloud[i][k] + amplitude_m * unitOffset(bits));
         }
     }

@@ -8,12 +8,14 @@
 #include <random>
 #include <vector>
 
+#include "core/SplitMix.h"
+
 namespace stairmap::sim {
 
 class RandomDraw {
 public:
     RandomDraw(std::uint64_t seed, std::uint64_t index, std::uint64_t stream)
-        : rng_(mix(mix(mix(seed) ^ index) ^ stream)) {}
+        : rng_(splitMix64(splitMix64(splitMix64(seed) ^ index) ^ stream)) {}
 
     /// Uniform in [lo, hi] (lo when hi <= lo).
     double uniform(double lo, double hi) {
@@ -43,12 +45,6 @@ public:
 private:
     /// Own mapping to [0, 1): std::uniform_real_distribution is not the same on every library.
     double unit() { return static_cast<double>(rng_() >> 11) * (1.0 / 9007199254740992.0); }
-    static std::uint64_t mix(std::uint64_t x) {
-        x += 0x9e3779b97f4a7c15ULL;
-        x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-        return x ^ (x >> 31);
-    }
     std::mt19937_64 rng_;
     std::normal_distribution<double> normal_{0.0, 1.0};
 };
